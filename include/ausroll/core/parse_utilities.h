@@ -1,0 +1,38 @@
+/**
+ * @file parse_utilities.h
+ * Small helpers that turn .prm strings into numbers, points and lists, and report a bad value
+ * with the full name of the entry.
+ */
+#pragma once
+
+#include <deal.II/base/point.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ausroll
+{
+  /** Split @p text at @p delimiter and trim blanks around each piece (empty pieces dropped). */
+  std::vector<std::string> split_and_trim(const std::string &text, const char delimiter);
+
+  /** Parse a number; throw InputError naming @p entry if @p text is not one. */
+  double parse_double(const std::string &text, const std::string &entry);
+
+  /** Parse a comma-separated list of numbers. */
+  std::vector<double> parse_double_list(const std::string &text, const std::string &entry);
+
+  /** Parse a comma-separated list of non-negative integers. */
+  std::vector<unsigned int> parse_unsigned_list(const std::string &text, const std::string &entry);
+
+  /** Parse "x, y[, z]" into a point with exactly dim coordinates. */
+  template <int dim>
+  dealii::Point<dim> parse_point(const std::string &text, const std::string &entry);
+
+  /**
+   * Parse a list of named points "name: x, y; name2: x, y" (used by `Postprocess/Monitor points`).
+   */
+  template <int dim>
+  std::vector<std::pair<std::string, dealii::Point<dim>>>
+  parse_named_points(const std::string &text, const std::string &entry);
+} // namespace ausroll

@@ -1,0 +1,49 @@
+/**
+ * @file geometry_parameters.h
+ * The `Geometry` subsection: which workpiece mesh to build and how fine.
+ */
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <string>
+#include <vector>
+
+namespace ausroll::geometry
+{
+  /** Workpiece shape (`Geometry/Type`). */
+  enum class WorkpieceType
+  {
+    quarter_ring, ///< quarter of an annulus (thick cylinder); subsection `Quarter ring`
+    rectangle,    ///< axis-parallel rectangle (slab, block, cantilever, upsetting); `Rectangle`
+    mesh_file     ///< a mesh read from `Mesh file` (Gmsh .msh or UCD .inp)
+  };
+
+  /**
+   * Parameters of subsection `Geometry` and its shape subsections.
+   */
+  struct GeometryParameters
+  {
+    WorkpieceType type = WorkpieceType::quarter_ring; ///< `Type`
+    unsigned int  global_refinements = 0;             ///< `Global refinements` of the coarse mesh
+    std::string   mesh_file;                          ///< `Mesh file` (Type = mesh file)
+
+    // subsection `Quarter ring`
+    double       inner_radius = 100.; ///< `Inner radius`
+    double       outer_radius = 200.; ///< `Outer radius`
+    unsigned int radial_cells = 4;    ///< `Radial cells` of the coarse mesh
+    unsigned int angular_cells = 4;   ///< `Angular cells` of the coarse mesh
+
+    // subsection `Rectangle`
+    dealii::Point<2>          lower_left{0., 0.};    ///< `Lower left corner`
+    dealii::Point<2>          upper_right{1., 1.};   ///< `Upper right corner`
+    std::vector<unsigned int> rectangle_cells{1, 1}; ///< `Cells` in x and y of the coarse mesh
+
+    /** Declare subsection `Geometry`. */
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    /** Read subsection `Geometry`; the mesh file path is resolved relative to @p input_directory.
+     */
+    void parse_parameters(dealii::ParameterHandler &prm, const std::string &input_directory);
+  };
+} // namespace ausroll::geometry

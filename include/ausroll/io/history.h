@@ -1,0 +1,38 @@
+/**
+ * @file history.h
+ * history.csv: one row per converged load step.
+ */
+#pragma once
+
+#include <mpi.h>
+
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ausroll::io
+{
+  /** One history row: (column name, value) in column order. */
+  using HistoryRow = std::vector<std::pair<std::string, double>>;
+
+  /**
+   * Writes history.csv on rank 0. The first row fixes the columns (header line); every row is
+   * flushed at once so that the file stays complete if a run is stopped.
+   */
+  class History
+  {
+  public:
+    /** History file @p path (truncated, or appended to when @p append). */
+    History(const MPI_Comm comm, const std::string &path, const bool append = false);
+
+    /** Append @p row; its column names must match the first row's. */
+    void add_row(const HistoryRow &row);
+
+  private:
+    bool                     writer;  ///< true on rank 0
+    std::ofstream            file;    ///< the CSV file (rank 0)
+    std::vector<std::string> columns; ///< names fixed by the first row
+    std::string              path;    ///< file name, for messages
+  };
+} // namespace ausroll::io

@@ -1,0 +1,67 @@
+/**
+ * @file line_probe.h
+ * Fields sampled along straight lines, written as CSV (`Postprocess/Line probes`).
+ */
+#pragma once
+
+#include <ausroll/mechanics/assembler.h>
+#include <ausroll/mechanics/quadrature_interpolation.h>
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <string>
+#include <vector>
+
+namespace ausroll::io
+{
+  /**
+   * Samples displacement (FE interpolation) and Cauchy stress and equivalent plastic strain
+   * (Lagrange interpolation of the material points of the containing cell) at equally spaced
+   * points of straight lines in the reference configuration. Each output writes
+   * `<dir>/probe_<name>_NNNN.csv` with columns
+   * `time,s,x,y,ux,uy,stress_xx,stress_yy,stress_zz,stress_xy,von_mises_stress,equivalent_plastic_strain`
+   * (s = distance from the line's start).
+   * Set by `Postprocess/Line probes` = "name: x0, y0, x1, y1, n; ...".
+   */
+  template <int dim>
+  class LineProbes
+  {
+  public:
+    /** Probes described by @p specification; InputError names `Postprocess/Line probes`. */
+    LineProbes(const std::string &specification, const unsigned int n_q_points_1d);
+
+    /** Locate the sample points in the mesh (call after every mesh change). */
+    void locate(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &dof_handler);
+
+    /** Write every probe for output number @p counter at pseudo-time @p time into @p directory. */
+    void write(const std::string                           &directory,
+               const unsigned int                           counter,
+               const double                                 time,
+               const dealii::Mapping<dim>                  &mapping,
+               const dealii::DoFHandler<dim>               &dof_handler,
+               const dealii::TrilinosWrappers::MPI::Vector &solution,
+               const mechanics::MaterialPointStorage<dim>  &material_points) const;
+
+    /** True if no probe is defined. */
+    bool empty() const { return probes.empty(); }
+
+  private:
+    struct Sample
+    {
+      dealii::Point<dim>                                     position;
+      bool                                                   local = false;
+      typename dealii::DoFHandler<dim>::active_cell_iterator cell;
+      dealii::Point<dim>                                     unit_point;
+    };
+    struct Probe
+    {
+      std::string         name;
+      dealii::Point<dim>  start, end;
+      std::vector<Sample> samples;
+    };
+    std::vector<Probe>                      probes;
+    mechanics::QuadratureInterpolation<dim> interpolation;
+  };
+} // namespace ausroll::io

@@ -1,0 +1,52 @@
+/**
+ * @file material_state.h
+ * The state carried by one material (quadrature) point.
+ */
+#pragma once
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <vector>
+
+namespace ausroll::material
+{
+  /**
+   * State variables of a material point in 3D. Every constitutive model uses the same record, so
+   * that transfer across mesh refinement and checkpointing treat all models alike.
+   *
+   * - @ref stress: Cauchy stress sigma (all models keep it current, for output and for the
+   *   rate form of the updated Lagrangian model).
+   * - @ref plastic_strain: plastic strain (small strain: eps_p; total Lagrangian: plastic
+   *   Green-Lagrange strain; finite strain: logarithmic plastic strain, for output).
+   * - @ref back_stress: back stress of linear kinematic hardening (deviatoric).
+   * - @ref elastic_left_cauchy_green: b_e = F_e F_e^T of the multiplicative finite-strain model.
+   * - @ref deformation_gradient: F at this state (3x3; the out-of-plane stretch of plane stress,
+   *   the hoop stretch of axisymmetric models).
+   * - @ref equivalent_plastic_strain: accumulated equivalent plastic strain alpha.
+   */
+  struct MaterialState
+  {
+    dealii::SymmetricTensor<2, 3> stress;         ///< Cauchy stress
+    dealii::SymmetricTensor<2, 3> plastic_strain; ///< plastic strain measure of the model
+    dealii::SymmetricTensor<2, 3> back_stress;    ///< kinematic-hardening back stress
+    dealii::SymmetricTensor<2, 3> elastic_left_cauchy_green;      ///< b_e (finite strain model)
+    dealii::Tensor<2, 3>          deformation_gradient;           ///< F at this state
+    double                        equivalent_plastic_strain = 0.; ///< alpha
+
+    /** The undeformed, stress-free state: F = b_e = I, everything else zero. */
+    MaterialState();
+
+    /** Number of doubles written by pack(). */
+    static constexpr unsigned int n_packed_values = 6 * 4 + 9 + 1;
+
+    /** Append the state to @p data as n_packed_values doubles (mesh transfer, checkpoints). */
+    void pack(std::vector<double> &data) const;
+
+    /** Read the state from n_packed_values doubles starting at @p data. */
+    void unpack(const double *data);
+
+    /** von Mises equivalent of the Cauchy stress, sqrt(3/2 |dev sigma|^2). */
+    double von_mises_stress() const;
+  };
+} // namespace ausroll::material

@@ -1,0 +1,115 @@
+/**
+ * @file plasticity_model.h
+ * Stress return (return mapping) of rate-independent plasticity in a small-strain format:
+ * given an elastic trial stress, find the admissible stress and the algorithmic tangent.
+ * All kinematic variants (small strain, total Lagrangian, updated Lagrangian, finite strain with
+ * logarithmic elastic strain) reuse the same return mapping.
+ */
+#pragma once
+
+#include <ausroll/material/elasticity.h>
+#include <ausroll/material/hardening_law.h>
+#include <ausroll/material/material_parameters.h>
+
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <memory>
+
+namespace ausroll::material
+{
+  /**
+   * Result of one return mapping.
+   */
+  struct ReturnMappingResult
+  {
+    dealii::SymmetricTensor<2, 3> stress;                           ///< admissible stress
+    dealii::SymmetricTensor<2, 3> plastic_strain_increment;         ///< Delta eps_p
+    dealii::SymmetricTensor<2, 3> back_stress;                      ///< updated back stress
+    double                        eq_plastic_strain_increment = 0.; ///< Delta alpha
+    dealii::SymmetricTensor<4, 3>
+         tangent;         ///< algorithmic tangent d stress / d (elastic trial strain)
+    bool plastic = false; ///< true if the step was plastic
+  };
+
+  /**
+   * Elastic-plastic stress update in stress space. The trial stress is sigma_trial = C :
+   * eps_e_trial; the result's tangent is d sigma / d eps_e_trial (consistent with the discrete
+   * update).
+   */
+  class PlasticityModel
+  {
+  public:
+    /** Model with the elastic moduli of @p parameters. */
+    explicit PlasticityModel(const MaterialParameters &parameters);
+    virtual ~PlasticityModel() = default;
+
+    /**
+     * Return @p trial_stress to the yield surface given the state at the start of the step
+     * (back stress @p back_stress_old, equivalent plastic strain @p alpha_old).
+     */
+    virtual ReturnMappingResult return_map(const dealii::SymmetricTensor<2, 3> &trial_stress,
+                                           const dealii::SymmetricTensor<2, 3> &back_stress_old,
+                                           const double alpha_old) const = 0;
+
+    /** Value of the yield function (negative inside the elastic domain). */
+    virtual double yield_function(const dealii::SymmetricTensor<2, 3> &stress,
+                                  const dealii::SymmetricTensor<2, 3> &back_stress,
+                                  const double                         alpha) const = 0;
+
+    /** The elastic law. */
+    const IsotropicElasticity &elasticity() const { return elastic; }
+
+  protected:
+    IsotropicElasticity           elastic;   ///< elastic moduli
+    dealii::SymmetricTensor<4, 3> stiffness; ///< C
+  };
+
+  /**
+   * `Yield criterion = none`: purely elastic.
+   */
+  class NoPlasticity : public PlasticityModel
+  {
+  public:
+    using PlasticityModel::PlasticityModel;
+
+    ReturnMappingResult return_map(const dealii::SymmetricTensor<2, 3> &trial_stress,
+                                   const dealii::SymmetricTensor<2, 3> &back_stress_old,
+                                   const double                         alpha_old) const override;
+
+    double yield_function(const dealii::SymmetricTensor<2, 3> &,
+                          const dealii::SymmetricTensor<2, 3> &,
+                          const double) const override
+    {
+      return -1.;
+    }
+  };
+
+  /**
+   * `Yield criterion = von Mises`: f = sqrt(3/2) |dev sigma - beta| - sigma_y(alpha) with isotropic
+   * hardening (linear or power law) and linear Prager kinematic hardening
+   * beta' = 2/3 H_k eps_p'. Radial return (one scalar Newton iteration loop for nonlinear
+   * hardening) and the consistent algorithmic tangent D = C - 6 mu^2 dgamma/q I_dev + 6 mu^2
+   * (dgamma/q - 1/(3 mu + H_k + H')) N (x) N.
+   */
+  class VonMisesPlasticity : public PlasticityModel
+  {
+  public:
+    /** Model from subsection `Material`. */
+    explicit VonMisesPlasticity(const MaterialParameters &parameters);
+
+    ReturnMappingResult return_map(const dealii::SymmetricTensor<2, 3> &trial_stress,
+                                   const dealii::SymmetricTensor<2, 3> &back_stress_old,
+                                   const double                         alpha_old) const override;
+
+    double yield_function(const dealii::SymmetricTensor<2, 3> &stress,
+                          const dealii::SymmetricTensor<2, 3> &back_stress,
+                          const double                         alpha) const override;
+
+  private:
+    HardeningLaw hardening;         ///< isotropic hardening sigma_y(alpha)
+    double       kinematic_modulus; ///< H_k
+  };
+
+  /** The plasticity model selected by `Material/Yield criterion`. */
+  std::unique_ptr<PlasticityModel> create_plasticity_model(const MaterialParameters &parameters);
+} // namespace ausroll::material

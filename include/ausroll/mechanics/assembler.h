@@ -1,0 +1,118 @@
+/**
+ * @file assembler.h
+ * Cell loop of the equilibrium equations: internal forces, surface loads, consistent tangent.
+ */
+#pragma once
+
+#include <ausroll/material/constitutive_model.h>
+#include <ausroll/material/material_point.h>
+#include <ausroll/mechanics/boundary_conditions.h>
+#include <ausroll/mechanics/planar_kinematics.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/quadrature_point_data.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <array>
+#include <map>
+
+namespace ausroll::mechanics
+{
+  /** Storage of the material points of the locally owned cells. */
+  template <int dim>
+  using MaterialPointStorage
+      = dealii::CellDataStorage<typename dealii::Triangulation<dim>::cell_iterator,
+                                material::MaterialPoint>;
+
+  /**
+   * A linear map applied to the equilibrium rows of one node before constraints are condensed:
+   * rows(dofs) <- matrix * rows(dofs). The contact operator uses it to add Coulomb friction
+   * (t - mu s n) to the tangential equation of a slipping node, consistently in residual and
+   * tangent.
+   */
+  template <int dim>
+  struct NodalRowTransform
+  {
+    std::array<dealii::types::global_dof_index, dim> dofs;   ///< the node's DoFs, by component
+    dealii::Tensor<2, dim>                           matrix; ///< new rows = matrix * old rows
+  };
+
+  /** Row transforms keyed by the node's first (x-component) DoF. */
+  template <int dim>
+  using RowTransforms = std::map<dealii::types::global_dof_index, NodalRowTransform<dim>>;
+
+  /** The vectors and matrices one assembly fills. */
+  struct AssemblyTargets
+  {
+    /** f_int - f_ext with only hanging-node constraints applied: entries at constrained DoFs are
+        the reactions (required). */
+    dealii::TrilinosWrappers::MPI::Vector *residual = nullptr;
+    /** External forces (surface loads), hanging-node condensed (required). */
+    dealii::TrilinosWrappers::MPI::Vector *external_force = nullptr;
+    /** Residual condensed with the Newton constraints and row transforms (homogeneous): the
+        out-of-balance force of the free equations (optional). */
+    dealii::TrilinosWrappers::MPI::Vector *free_residual = nullptr;
+    /** Tangent matrix condensed with the Newton constraints (optional). */
+    dealii::TrilinosWrappers::SparseMatrix *matrix = nullptr;
+    /** Right-hand side -r of the Newton system, with inhomogeneities (with matrix). */
+    dealii::TrilinosWrappers::MPI::Vector *rhs = nullptr;
+  };
+
+  /** Outcome of an assembly, identical on all MPI ranks. */
+  struct AssemblyStatus
+  {
+    bool        ok = true;         ///< false: material failure or inverted element somewhere
+    double      min_jacobian = 1.; ///< smallest det F over all quadrature points
+    std::string message;           ///< reason when !ok (from the rank that failed)
+  };
+
+  /**
+   * Assembles residual and tangent of quasi-static equilibrium, div P = 0 in the reference
+   * configuration, for any ConstitutiveModel. The 3D embedding of the planar model comes from
+   * PlanarKinematics; surface loads from BoundaryConditions.
+   */
+  template <int dim>
+  class Assembler
+  {
+  public:
+    /** Assembler for the element @p fe with @p n_q_points_1d Gauss points per direction. */
+    Assembler(const dealii::Mapping<dim>        &mapping,
+              const dealii::FiniteElement<dim>  &fe,
+              const unsigned int                 n_q_points_1d,
+              const PlanarKinematics<dim>       &kinematics,
+              const material::ConstitutiveModel &model,
+              const BoundaryConditions<dim>     &boundary_conditions);
+
+    /** The cell quadrature (material points live at its points). */
+    const dealii::Quadrature<dim> &quadrature() const { return cell_quadrature; }
+
+    /**
+     * Evaluate all material points of the locally owned cells at the displacement @p solution
+     * (ghosted) and time @p time (trial states are overwritten), and fill @p targets.
+     * @p hanging holds the hanging-node constraints, @p newton the constraints of the Newton
+     * increment (hanging nodes, Dirichlet, contact; inhomogeneous); @p row_transforms may be null.
+     */
+    AssemblyStatus assemble(const dealii::DoFHandler<dim>               &dof_handler,
+                            const dealii::TrilinosWrappers::MPI::Vector &solution,
+                            const double                                 time,
+                            MaterialPointStorage<dim>                   &material_points,
+                            const dealii::AffineConstraints<double>     &hanging,
+                            const dealii::AffineConstraints<double>     &newton,
+                            const RowTransforms<dim>                    *row_transforms,
+                            const AssemblyTargets                       &targets) const;
+
+  private:
+    const dealii::Mapping<dim>        &mapping;
+    const dealii::FiniteElement<dim>  &fe;
+    const dealii::QGauss<dim>          cell_quadrature;
+    const dealii::QGauss<dim - 1>      face_quadrature;
+    const PlanarKinematics<dim>       &kinematics;
+    const material::ConstitutiveModel &model;
+    const BoundaryConditions<dim>     &boundary_conditions;
+  };
+} // namespace ausroll::mechanics

@@ -1,0 +1,95 @@
+/**
+ * @file boundary_conditions.h
+ * Prescribed displacements and surface loads on workpiece boundaries (`Boundary conditions`).
+ */
+#pragma once
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ausroll::mechanics
+{
+  /** Kind of a boundary condition (`Type`). */
+  enum class BoundaryConditionType
+  {
+    fixed,        ///< all displacement components zero
+    displacement, ///< selected components follow `Value` (one expression per selected component)
+    pressure, ///< normal pressure `Value` (positive pushes into the body) on the reference surface
+    traction  ///< traction vector `Value` (dim expressions) per reference area (dead load)
+  };
+
+  /** One entry `Boundary conditions/Condition N`. */
+  struct BoundaryCondition
+  {
+    dealii::types::boundary_id id = 0;                              ///< `Boundary id`
+    BoundaryConditionType      type = BoundaryConditionType::fixed; ///< `Type`
+    std::string                components = "x, y";                 ///< `Components` (displacement)
+    std::string                value = "0"; ///< `Value` expressions, ';'-separated
+  };
+
+  /** Parameters of subsection `Boundary conditions`. */
+  struct BoundaryConditionParameters
+  {
+    static constexpr unsigned int  max_conditions = 8; ///< declared `Condition 0..7` subsections
+    std::vector<BoundaryCondition> conditions;         ///< the first `Number of conditions`
+
+    /** Declare subsection `Boundary conditions`. */
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    /** Read subsection `Boundary conditions`. */
+    void parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /**
+   * The boundary conditions of a scene, with their parsed value functions of (x, y[, z], t).
+   */
+  template <int dim>
+  class BoundaryConditions
+  {
+  public:
+    /** Parse the expressions of @p parameters; InputError names a bad `Value` or `Components`. */
+    explicit BoundaryConditions(const BoundaryConditionParameters &parameters);
+
+    /**
+     * Add to @p constraints the Dirichlet conditions for a Newton increment at time @p time:
+     * delta_u_i = g_i(x, time) - u_i for every constrained DoF in @p constraints' locally relevant
+     * set, where u is @p current (ghosted).
+     */
+    void add_increment_constraints(const dealii::DoFHandler<dim>               &dof_handler,
+                                   const double                                 time,
+                                   const dealii::TrilinosWrappers::MPI::Vector &current,
+                                   dealii::AffineConstraints<double>           &constraints) const;
+
+    /** True if @p id carries a pressure or traction load. */
+    bool has_surface_load(const dealii::types::boundary_id id) const;
+
+    /**
+     * Surface traction (force per reference area) at reference point @p X with outward unit normal
+     * @p normal on boundary @p id at time @p time.
+     */
+    dealii::Tensor<1, dim> traction(const dealii::types::boundary_id id,
+                                    const dealii::Point<dim>        &X,
+                                    const dealii::Tensor<1, dim>    &normal,
+                                    const double                     time) const;
+
+    /** Names and current values of the pressure loads, for the history (`pressure_<id>`). */
+    std::vector<std::pair<std::string, double>> pressure_values(const double time) const;
+
+  private:
+    struct Entry
+    {
+      BoundaryCondition                            condition;
+      dealii::ComponentMask                        mask;
+      std::unique_ptr<dealii::FunctionParser<dim>> function; ///< dim components (unused ones 0)
+    };
+    std::vector<Entry> entries; ///< one per condition
+  };
+} // namespace ausroll::mechanics

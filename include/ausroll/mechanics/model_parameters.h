@@ -1,0 +1,37 @@
+/**
+ * @file model_parameters.h
+ * The `Model` subsection: kinematics, planar idealisation and finite element.
+ */
+#pragma once
+
+#include <ausroll/material/constitutive_model.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace ausroll::mechanics
+{
+  /** Two-dimensional idealisation of the workpiece (`Model/Planar model`). */
+  enum class PlanarModel
+  {
+    plane_strain, ///< eps_zz = 0
+    plane_stress, ///< sigma_zz = 0 (out-of-plane stretch solved at each material point)
+    axisymmetric  ///< x = radius r, y = axial coordinate z; hoop strain u_r / r; volume 2 pi r dA
+  };
+
+  /**
+   * Parameters of subsection `Model`.
+   */
+  struct ModelParameters
+  {
+    material::KinematicsType kinematics = material::KinematicsType::small_strain; ///< `Kinematics`
+    PlanarModel              planar_model = PlanarModel::plane_strain; ///< `Planar model`
+    double                   thickness = 1.; ///< `Thickness` of plane models (forces scale with it)
+    unsigned int             degree = 2;     ///< `Polynomial degree` of the displacement FE_Q
+    unsigned int quadrature_points = 0;      ///< `Quadrature points` per direction (0: degree+1)
+
+    /** Declare subsection `Model`. */
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    /** Read subsection `Model`. */
+    void parse_parameters(dealii::ParameterHandler &prm);
+  };
+} // namespace ausroll::mechanics

@@ -1,0 +1,153 @@
+/**
+ * @file scene.h
+ * A simulation scene: owns mesh, finite element, material points, loads, solvers and output, and
+ * runs the load-step loop.
+ */
+#pragma once
+
+#include <ausroll/io/history.h>
+#include <ausroll/io/line_probe.h>
+#include <ausroll/io/solution_writer.h>
+#include <ausroll/material/constitutive_model.h>
+#include <ausroll/mechanics/assembler.h>
+#include <ausroll/mechanics/boundary_conditions.h>
+#include <ausroll/mechanics/planar_kinematics.h>
+#include <ausroll/scene/scene_parameters.h>
+#include <ausroll/solver/linear_solver.h>
+#include <ausroll/solver/newton_solver.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ausroll::scene
+{
+  /**
+   * One run of ausroll. The constructor builds everything from the parameters; run() performs the
+   * load steps: for each step the Newton solver iterates on this object (it implements
+   * solver::NonlinearProblem), failing steps are cut back, converged steps are committed, written
+   * to history.csv and (every `Output/Interval` steps) to VTU.
+   */
+  template <int dim>
+  class Scene : public solver::NonlinearProblem
+  {
+  public:
+    /** Build the scene described by @p parameters on communicator @p comm. */
+    Scene(const SceneParameters &parameters, const MPI_Comm comm);
+
+    /**
+     * Run all load steps. Throws RunFailure (after writing the last converged state) when a step
+     * does not converge within `Loading/Maximum cutbacks`.
+     */
+    void run();
+
+    /** @name solver::NonlinearProblem */
+    //@{
+    bool                    assemble(const bool with_matrix, std::string &message) override;
+    double                  residual_norm() const override;
+    double                  reference_force() const override;
+    double                  constraint_violation() const override;
+    solver::LinearSolveInfo solve_for_increment() override;
+    void                    apply_increment(const double step_length) override;
+    double                  length_scale() const override;
+    //@}
+
+  private:
+    /** Distribute DoFs, build constraints, sparsity, vectors and material points. */
+    void setup_system();
+    /** Hanging-node + Dirichlet increment constraints at the current iterate. */
+    void build_newton_constraints();
+    /** Accept the converged step: commit material points, remember the solution. */
+    void commit_step();
+    /** Quantities of the converged state for history.csv. */
+    io::HistoryRow history_row(const solver::NewtonResult &result,
+                               const unsigned int          cutbacks) const;
+    /** Cell averages of stress and plastic strain for the VTU output. */
+    std::vector<io::CellField> cell_fields() const;
+    /** Write VTU output of the current (converged) state. */
+    void write_output();
+    /** Locate the monitor points and collect the DoFs of the reaction boundaries. */
+    void setup_postprocessing();
+
+    SceneParameters parameters; ///< the input
+    MPI_Comm        comm;       ///< communicator
+    unsigned int    rank;       ///< this process
+
+    dealii::ConditionalOStream log;            ///< status lines (Verbosity normal/verbose)
+    dealii::ConditionalOStream newton_log;     ///< Newton iterations (Verbosity verbose)
+    dealii::ConditionalOStream regression_log; ///< deterministic lines (Verbosity regression)
+    dealii::TimerOutput        timer;          ///< wall-time summary
+
+    dealii::parallel::distributed::Triangulation<dim> triangulation;
+    dealii::FESystem<dim>                             fe;
+    dealii::MappingQ<dim>                             mapping;
+    dealii::DoFHandler<dim>                           dof_handler;
+    dealii::IndexSet                                  owned_dofs;
+    dealii::IndexSet                                  relevant_dofs;
+
+    dealii::AffineConstraints<double> hanging_constraints; ///< hanging nodes only
+    dealii::AffineConstraints<double> newton_constraints;  ///< + Dirichlet increments
+
+    dealii::TrilinosWrappers::SparseMatrix system_matrix;
+    dealii::TrilinosWrappers::MPI::Vector  solution;         ///< current iterate (owned)
+    dealii::TrilinosWrappers::MPI::Vector  solution_ghosted; ///< current iterate (relevant)
+    dealii::TrilinosWrappers::MPI::Vector  step_start;       ///< last converged solution
+    dealii::TrilinosWrappers::MPI::Vector  newton_start;     ///< iterate at the last linear solve
+    dealii::TrilinosWrappers::MPI::Vector  increment;        ///< Newton increment
+    dealii::TrilinosWrappers::MPI::Vector  rhs;              ///< Newton right-hand side
+    dealii::TrilinosWrappers::MPI::Vector  residual;         ///< f_int - f_ext (reactions)
+    dealii::TrilinosWrappers::MPI::Vector  free_residual;    ///< condensed out-of-balance force
+    dealii::TrilinosWrappers::MPI::Vector  external_force;   ///< surface loads
+
+    mechanics::MaterialPointStorage<dim> material_points;
+
+    mechanics::PlanarKinematics<dim>             kinematics;
+    std::unique_ptr<material::ConstitutiveModel> model;
+    mechanics::BoundaryConditions<dim>           boundary_conditions;
+    std::unique_ptr<mechanics::Assembler<dim>>   assembler;
+    solver::LinearSolver<dim>                    linear_solver;
+    solver::NewtonSolver                         newton;
+
+    double       time = 0.;       ///< pseudo-time of the current iterate
+    unsigned int step_number = 0; ///< converged steps so far
+    unsigned int output_counter = 0;
+    int          last_output_step = -1;
+
+    double last_residual_norm = 0.;
+    double last_reference_force = 0.;
+    double last_constraint_violation = 0.;
+    double min_cell_diameter = 1.;
+
+    /** A monitored point: name, position, and where it lives (on its owning rank). */
+    struct MonitorPoint
+    {
+      std::string                                            name;
+      dealii::Point<dim>                                     position;
+      bool                                                   local = false;
+      typename dealii::DoFHandler<dim>::active_cell_iterator cell;
+      dealii::Point<dim>                                     unit_point;
+    };
+    std::vector<MonitorPoint> monitors;
+    /** Reaction boundaries: id and, per component, the locally owned DoFs on it. */
+    std::vector<std::pair<unsigned int, std::array<dealii::IndexSet, dim>>> reaction_boundaries;
+
+    std::unique_ptr<io::LineProbes<dim>>     probes;
+    std::unique_ptr<io::History>             history;
+    std::unique_ptr<io::SolutionWriter<dim>> writer;
+    double                                   start_wall_time = 0.;
+    dealii::Timer                            wall_clock;
+  };
+
+  /** Read @p parameter_file and run the scene on @p comm (dispatch on the dimension). */
+  void run_scene(const std::string &parameter_file, const MPI_Comm comm);
+} // namespace ausroll::scene

@@ -1,0 +1,49 @@
+/**
+ * @file scene_parameters.h
+ * All parameters of a scene (.prm file), one struct per subsection.
+ */
+#pragma once
+
+#include <ausroll/geometry/geometry_parameters.h>
+#include <ausroll/io/output_parameters.h>
+#include <ausroll/material/material_parameters.h>
+#include <ausroll/mechanics/boundary_conditions.h>
+#include <ausroll/mechanics/model_parameters.h>
+#include <ausroll/solver/loading_parameters.h>
+#include <ausroll/solver/solver_parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace ausroll::scene
+{
+  /**
+   * The complete input of a run. Top-level entry: `Scene name` (a label printed in the log).
+   */
+  struct SceneParameters
+  {
+    std::string                            name = "unnamed scene"; ///< `Scene name`
+    geometry::GeometryParameters           geometry;               ///< `Geometry`
+    mechanics::ModelParameters             model;                  ///< `Model`
+    material::MaterialParameters           material;               ///< `Material`
+    mechanics::BoundaryConditionParameters boundary_conditions;    ///< `Boundary conditions`
+    solver::LoadingParameters              loading;                ///< `Loading`
+    solver::SolverParameters               solver;                 ///< `Solver`
+    io::OutputParameters                   output;                 ///< `Output`
+    io::PostprocessParameters              postprocess;            ///< `Postprocess`
+
+    /** Declare every entry of every subsection. */
+    static void declare_parameters(dealii::ParameterHandler &prm);
+
+    /** Read all subsections (files named in the input are resolved relative to @p input_directory).
+     */
+    void parse_parameters(dealii::ParameterHandler &prm, const std::string &input_directory);
+  };
+
+  /**
+   * Read @p filename into a SceneParameters. Syntax errors, unknown entries and values that do not
+   * match their pattern become an InputError that names the file, line and entry.
+   */
+  SceneParameters read_parameter_file(const std::string &filename);
+} // namespace ausroll::scene

@@ -1,0 +1,27 @@
+/**
+ * @file loading_parameters.h
+ * The `Loading` subsection: load (pseudo-time) stepping and automatic cutback.
+ */
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace ausroll::solver
+{
+  /**
+   * Parameters of subsection `Loading`. Loads and prescribed motions are functions of the
+   * pseudo-time t in [0, End time]; the load factor reported in the history is t / End time.
+   */
+  struct LoadingParameters
+  {
+    double       end_time = 1.;            ///< `End time`
+    unsigned int number_of_steps = 10;     ///< `Number of steps` (nominal step = End time / steps)
+    unsigned int max_cutbacks = 6;         ///< `Maximum cutbacks` per step (each halves the step)
+    double       step_growth_factor = 1.5; ///< `Step growth factor` back towards the nominal step
+
+    /** Declare subsection `Loading`. */
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    /** Read subsection `Loading`. */
+    void parse_parameters(dealii::ParameterHandler &prm);
+  };
+} // namespace ausroll::solver

@@ -1,0 +1,80 @@
+/**
+ * @file newton_solver.h
+ * Newton-Raphson iteration of one load step with line search and divergence detection.
+ */
+#pragma once
+
+#include <ausroll/solver/linear_solver.h>
+#include <ausroll/solver/solver_parameters.h>
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <string>
+
+namespace ausroll::solver
+{
+  /**
+   * The nonlinear system of one load step, as the Newton solver sees it. The implementation
+   * (the scene) owns the iterate u, the constraints and the matrices.
+   */
+  class NonlinearProblem
+  {
+  public:
+    virtual ~NonlinearProblem() = default;
+
+    /**
+     * Rebuild the constraints of the Newton increment at the current iterate and evaluate the
+     * residual (and, with @p with_matrix, the tangent and right-hand side). Returns false and sets
+     * @p message if the state is not admissible (inverted element, failed material update).
+     */
+    virtual bool assemble(const bool with_matrix, std::string &message) = 0;
+
+    /** Norm of the out-of-balance force of the free equations at the last assembly. */
+    virtual double residual_norm() const = 0;
+
+    /** Force level the residual is compared with (external loads, reactions). */
+    virtual double reference_force() const = 0;
+
+    /** Largest violation of the prescribed displacement / contact constraints at the last assembly.
+     */
+    virtual double constraint_violation() const = 0;
+
+    /** Solve the linearised system for the increment (uses the last assembled matrix). */
+    virtual LinearSolveInfo solve_for_increment() = 0;
+
+    /** Set the iterate to u_start + @p step_length * increment, u_start being the iterate at the
+        last solve_for_increment(). */
+    virtual void apply_increment(const double step_length) = 0;
+
+    /** Length scale for the constraint tolerance (e.g. the mesh size), in mm. */
+    virtual double length_scale() const = 0;
+  };
+
+  /** Outcome of one Newton solve. */
+  struct NewtonResult
+  {
+    bool         converged = false;     ///< equilibrium reached
+    unsigned int iterations = 0;        ///< Newton iterations (linear solves)
+    unsigned int linear_iterations = 0; ///< Krylov iterations summed over the step
+    double       residual = 0.;         ///< final residual norm
+    std::string  reason;                ///< why it failed
+  };
+
+  /**
+   * Newton-Raphson with a backtracking line search (`Solver/Line search`), convergence test
+   * |r_free| <= max(absolute tolerance, residual tolerance * force level) with satisfied
+   * constraints, and detection of divergence, NaN and inadmissible states.
+   */
+  class NewtonSolver
+  {
+  public:
+    /** Solver configured by subsection `Solver`. */
+    explicit NewtonSolver(const SolverParameters &parameters);
+
+    /** Iterate @p problem to equilibrium; progress lines go to @p log (one per iteration). */
+    NewtonResult solve(NonlinearProblem &problem, dealii::ConditionalOStream &log) const;
+
+  private:
+    SolverParameters parameters;
+  };
+} // namespace ausroll::solver

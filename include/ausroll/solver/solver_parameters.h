@@ -1,0 +1,45 @@
+/**
+ * @file solver_parameters.h
+ * The `Solver` subsection: Newton iteration and linear solver.
+ */
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace ausroll::solver
+{
+  /** Linear solver family (`Solver/Linear solver/Type`). */
+  enum class LinearSolverType
+  {
+    direct,   ///< sparse direct factorisation (Trilinos Amesos: MUMPS or KLU)
+    iterative ///< GMRES preconditioned by algebraic multigrid (Trilinos ML) with rigid-body modes
+  };
+
+  /** Parameters of subsection `Solver/Linear solver`. */
+  struct LinearSolverParameters
+  {
+    LinearSolverType type = LinearSolverType::direct; ///< `Type`
+    std::string      direct_package = "MUMPS";        ///< `Direct solver package` (MUMPS | KLU)
+    double           relative_tolerance = 1e-10; ///< `Relative tolerance` of the iterative solver
+    unsigned int     max_iterations = 2000;      ///< `Maximum iterations` of the iterative solver
+    unsigned int     restart = 200;              ///< `GMRES restart`
+  };
+
+  /** Parameters of subsection `Solver`. */
+  struct SolverParameters
+  {
+    unsigned int max_newton_iterations = 25; ///< `Maximum Newton iterations`
+    double       residual_tolerance = 1e-9;  ///< `Residual tolerance` (relative to the force level)
+    double       absolute_tolerance = 1e-10; ///< `Absolute residual tolerance` (N)
+    double       divergence_factor = 1e6;    ///< `Divergence factor`: abort when |r| grows by it
+    bool         line_search = true;         ///< `Line search`
+    LinearSolverParameters linear;           ///< subsection `Linear solver`
+
+    /** Declare subsection `Solver`. */
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    /** Read subsection `Solver`. */
+    void parse_parameters(dealii::ParameterHandler &prm);
+  };
+} // namespace ausroll::solver

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Usage: scripts/run.sh [FILE.prm]
+# Installs what is missing (Debian 12), builds ausroll (Release, build/) and runs FILE.prm
+# (default: the flagship scene). Set NP=4 to run with mpirun on 4 ranks.
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
+
+prm="${1:-$AUSROLL_ROOT/prm/thick_cylinder.prm}"
+if [ ! -f "$prm" ]; then
+  echo "scripts/run.sh: no such parameter file: $prm" >&2
+  exit 2
+fi
+
+ausroll_install_missing
+ausroll_build
+
+if [ "${NP:-1}" -gt 1 ]; then
+  mpirun -np "$NP" "$BUILD_DIR/ausroll" "$prm"
+else
+  "$BUILD_DIR/ausroll" "$prm"
+fi
+
+dir=$(sed -n 's/^[[:space:]]*set[[:space:]]\+Directory[[:space:]]*=[[:space:]]*\([^#]*\).*/\1/p' "$prm" | tail -n 1 | xargs)
+echo
+echo "Output of $(basename "$prm") is in $(pwd)/${dir:-output}/ (history.csv; open solution.pvd in ParaView)."

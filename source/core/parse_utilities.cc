@@ -1,0 +1,90 @@
+#include <ausroll/core/exceptions.h>
+#include <ausroll/core/parse_utilities.h>
+
+#include <cstdlib>
+#include <sstream>
+
+namespace ausroll
+{
+  std::vector<std::string> split_and_trim(const std::string &text, const char delimiter)
+  {
+    std::vector<std::string> pieces;
+    std::stringstream        stream(text);
+    std::string              piece;
+    while (std::getline(stream, piece, delimiter))
+    {
+      const auto first = piece.find_first_not_of(" \t\n\r");
+      if (first == std::string::npos)
+        continue;
+      const auto last = piece.find_last_not_of(" \t\n\r");
+      pieces.push_back(piece.substr(first, last - first + 1));
+    }
+    return pieces;
+  }
+
+  double parse_double(const std::string &text, const std::string &entry)
+  {
+    const char  *begin = text.c_str();
+    char        *end = nullptr;
+    const double value = std::strtod(begin, &end);
+    if (end == begin || std::string(end).find_first_not_of(" \t") != std::string::npos)
+      throw InputError(entry + ": '" + text + "' is not a number");
+    return value;
+  }
+
+  std::vector<double> parse_double_list(const std::string &text, const std::string &entry)
+  {
+    std::vector<double> values;
+    for (const std::string &piece : split_and_trim(text, ','))
+      values.push_back(parse_double(piece, entry));
+    return values;
+  }
+
+  std::vector<unsigned int> parse_unsigned_list(const std::string &text, const std::string &entry)
+  {
+    std::vector<unsigned int> values;
+    for (const double v : parse_double_list(text, entry))
+    {
+      if (v < 0 || v != static_cast<double>(static_cast<unsigned int>(v)))
+        throw InputError(entry + ": '" + text + "' must be a list of non-negative integers");
+      values.push_back(static_cast<unsigned int>(v));
+    }
+    return values;
+  }
+
+  template <int dim>
+  dealii::Point<dim> parse_point(const std::string &text, const std::string &entry)
+  {
+    const std::vector<double> values = parse_double_list(text, entry);
+    if (values.size() != dim)
+      throw InputError(entry + ": '" + text + "' must have " + std::to_string(dim)
+                       + " coordinates");
+    dealii::Point<dim> p;
+    for (unsigned int d = 0; d < dim; ++d)
+      p[d] = values[d];
+    return p;
+  }
+
+  template <int dim>
+  std::vector<std::pair<std::string, dealii::Point<dim>>>
+  parse_named_points(const std::string &text, const std::string &entry)
+  {
+    std::vector<std::pair<std::string, dealii::Point<dim>>> points;
+    for (const std::string &item : split_and_trim(text, ';'))
+    {
+      const auto colon = item.find(':');
+      if (colon == std::string::npos || colon == 0)
+        throw InputError(entry + ": '" + item + "' must read 'name: x, y'");
+      std::string name = split_and_trim(item.substr(0, colon), ' ').front();
+      points.emplace_back(name, parse_point<dim>(item.substr(colon + 1), entry));
+    }
+    return points;
+  }
+
+  template dealii::Point<2> parse_point<2>(const std::string &, const std::string &);
+  template dealii::Point<3> parse_point<3>(const std::string &, const std::string &);
+  template std::vector<std::pair<std::string, dealii::Point<2>>>
+  parse_named_points<2>(const std::string &, const std::string &);
+  template std::vector<std::pair<std::string, dealii::Point<3>>>
+  parse_named_points<3>(const std::string &, const std::string &);
+} // namespace ausroll

@@ -1,0 +1,87 @@
+#include <ausroll/core/exceptions.h>
+#include <ausroll/core/parse_utilities.h>
+#include <ausroll/geometry/geometry_parameters.h>
+
+namespace ausroll::geometry
+{
+  using namespace dealii;
+
+  void GeometryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    prm.declare_entry("Type",
+                      "quarter ring",
+                      Patterns::Selection("quarter ring|rectangle|mesh file"),
+                      "Workpiece shape. Boundary ids: quarter ring: 0 inner arc, 1 outer arc, "
+                      "2 edge on the x axis, 3 edge on the y axis; rectangle: 0 left, 1 right, "
+                      "2 bottom, 3 top; mesh file: the ids stored in the file.");
+    prm.declare_entry("Global refinements",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "Uniform refinements of the coarse mesh before the run starts.");
+    prm.declare_entry(
+        "Mesh file",
+        "",
+        Patterns::Anything(),
+        "Mesh for Type = mesh file (Gmsh .msh or UCD .inp), relative to the .prm file.");
+
+    prm.enter_subsection("Quarter ring");
+    prm.declare_entry("Inner radius", "100", Patterns::Double(0.), "Inner radius a (mm).");
+    prm.declare_entry("Outer radius", "200", Patterns::Double(0.), "Outer radius b (mm).");
+    prm.declare_entry("Radial cells", "4", Patterns::Integer(1), "Coarse cells across the wall.");
+    prm.declare_entry(
+        "Angular cells", "4", Patterns::Integer(1), "Coarse cells along the quarter.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Rectangle");
+    prm.declare_entry(
+        "Lower left corner", "0, 0", Patterns::List(Patterns::Double(), 2, 2), "x, y (mm).");
+    prm.declare_entry(
+        "Upper right corner", "1, 1", Patterns::List(Patterns::Double(), 2, 2), "x, y (mm).");
+    prm.declare_entry(
+        "Cells", "1, 1", Patterns::List(Patterns::Integer(1), 2, 2), "Coarse cells in x and y.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  void GeometryParameters::parse_parameters(ParameterHandler  &prm,
+                                            const std::string &input_directory)
+  {
+    prm.enter_subsection("Geometry");
+    const std::string t = prm.get("Type");
+    type = t == "quarter ring" ? WorkpieceType::quarter_ring
+           : t == "rectangle"  ? WorkpieceType::rectangle
+                               : WorkpieceType::mesh_file;
+    global_refinements = prm.get_integer("Global refinements");
+    mesh_file = prm.get("Mesh file");
+    if (!mesh_file.empty() && mesh_file[0] != '/')
+      mesh_file = input_directory + mesh_file;
+
+    prm.enter_subsection("Quarter ring");
+    inner_radius = prm.get_double("Inner radius");
+    outer_radius = prm.get_double("Outer radius");
+    radial_cells = prm.get_integer("Radial cells");
+    angular_cells = prm.get_integer("Angular cells");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Rectangle");
+    lower_left
+        = parse_point<2>(prm.get("Lower left corner"), "Geometry/Rectangle/Lower left corner");
+    upper_right
+        = parse_point<2>(prm.get("Upper right corner"), "Geometry/Rectangle/Upper right corner");
+    rectangle_cells = parse_unsigned_list(prm.get("Cells"), "Geometry/Rectangle/Cells");
+    prm.leave_subsection();
+    prm.leave_subsection();
+
+    if (type == WorkpieceType::quarter_ring)
+      require(inner_radius > 0. && inner_radius < outer_radius,
+              "Geometry/Quarter ring/Inner radius",
+              "must be positive and smaller than Outer radius");
+    if (type == WorkpieceType::rectangle)
+      require(lower_left[0] < upper_right[0] && lower_left[1] < upper_right[1],
+              "Geometry/Rectangle/Upper right corner",
+              "must lie above and right of Lower left corner");
+    if (type == WorkpieceType::mesh_file)
+      require(!mesh_file.empty(), "Geometry/Mesh file", "must be set when Type = mesh file");
+  }
+} // namespace ausroll::geometry

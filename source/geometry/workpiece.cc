@@ -1,0 +1,110 @@
+#include <ausroll/core/exceptions.h>
+#include <ausroll/geometry/workpiece.h>
+
+#include <deal.II/base/numbers.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+
+#include <cmath>
+#include <fstream>
+
+namespace ausroll::geometry
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /**
+     * Quarter annulus a <= r <= b, 0 <= theta <= pi/2 as a polar grid of radial x angular cells;
+     * all cells carry a PolarManifold (manifold id 1) so that refinement follows the circles.
+     */
+    void quarter_ring(const GeometryParameters &p, Triangulation<2> &coarse)
+    {
+      GridGenerator::subdivided_hyper_rectangle(coarse,
+                                                {p.radial_cells, p.angular_cells},
+                                                Point<2>(p.inner_radius, 0.),
+                                                Point<2>(p.outer_radius, numbers::PI / 2.));
+      GridTools::transform([](const Point<2> &rt)
+                           { return Point<2>(rt[0] * std::cos(rt[1]), rt[0] * std::sin(rt[1])); },
+                           coarse);
+      const double tol = 1e-8 * p.outer_radius;
+      for (const auto &cell : coarse.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+          {
+            const Point<2> c = face->center();
+            const double   r = c.norm();
+            if (std::abs(c[1]) < tol)
+              face->set_boundary_id(2);
+            else if (std::abs(c[0]) < tol)
+              face->set_boundary_id(3);
+            else if (r < 0.5 * (p.inner_radius + p.outer_radius))
+              face->set_boundary_id(0);
+            else
+              face->set_boundary_id(1);
+          }
+    }
+
+    void rectangle(const GeometryParameters &p, Triangulation<2> &coarse)
+    {
+      require(p.rectangle_cells.size() == 2, "Geometry/Rectangle/Cells", "needs two numbers");
+      GridGenerator::subdivided_hyper_rectangle(
+          coarse, p.rectangle_cells, p.lower_left, p.upper_right, /*colorize=*/true);
+    }
+
+    template <int dim>
+    void mesh_file(const GeometryParameters &p, Triangulation<dim> &coarse)
+    {
+      std::ifstream in(p.mesh_file);
+      if (!in)
+        throw InputError("Geometry/Mesh file: cannot open '" + p.mesh_file + "'");
+      GridIn<dim> grid_in(coarse);
+      try
+      {
+        const std::string ext = p.mesh_file.substr(p.mesh_file.find_last_of('.') + 1);
+        if (ext == "msh")
+          grid_in.read_msh(in);
+        else if (ext == "inp")
+          grid_in.read_ucd(in);
+        else
+          throw InputError("Geometry/Mesh file: '" + p.mesh_file
+                           + "' must end in .msh (Gmsh) or .inp (UCD)");
+      }
+      catch (const ExceptionBase &e)
+      {
+        throw InputError("Geometry/Mesh file: cannot read '" + p.mesh_file + "'");
+      }
+    }
+  } // namespace
+
+  template <int dim>
+  void create_workpiece(const GeometryParameters &parameters, Triangulation<dim> &triangulation)
+  {
+    Triangulation<dim> coarse;
+    if (parameters.type == WorkpieceType::mesh_file)
+      mesh_file(parameters, coarse);
+    else if constexpr (dim == 2)
+    {
+      if (parameters.type == WorkpieceType::quarter_ring)
+        quarter_ring(parameters, coarse);
+      else
+        rectangle(parameters, coarse);
+    }
+    else
+      throw InputError("Geometry/Type: this shape is two-dimensional");
+
+    triangulation.copy_triangulation(coarse);
+    if constexpr (dim == 2)
+      if (parameters.type == WorkpieceType::quarter_ring)
+      {
+        triangulation.set_all_manifold_ids(1);
+        triangulation.set_manifold(1, PolarManifold<2>(Point<2>()));
+      }
+    triangulation.refine_global(parameters.global_refinements);
+  }
+
+  template void create_workpiece<2>(const GeometryParameters &, Triangulation<2> &);
+  template void create_workpiece<3>(const GeometryParameters &, Triangulation<3> &);
+} // namespace ausroll::geometry

@@ -1,0 +1,173 @@
+#include <ausroll/core/exceptions.h>
+#include <ausroll/core/parse_utilities.h>
+#include <ausroll/io/line_probe.h>
+
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace ausroll::io
+{
+  using namespace dealii;
+
+  template <int dim>
+  LineProbes<dim>::LineProbes(const std::string &specification, const unsigned int n_q_points_1d)
+      : interpolation(n_q_points_1d)
+  {
+    const std::string entry = "Postprocess/Line probes";
+    for (const std::string &item : split_and_trim(specification, ';'))
+    {
+      const auto colon = item.find(':');
+      if (colon == std::string::npos || colon == 0)
+        throw InputError(entry + ": '" + item + "' must read 'name: x0, y0, x1, y1, n'");
+      Probe probe;
+      probe.name = split_and_trim(item.substr(0, colon), ' ').front();
+      const std::vector<double> v = parse_double_list(item.substr(colon + 1), entry);
+      if (v.size() != 2 * dim + 1 || v.back() < 2
+          || v.back() != static_cast<unsigned int>(v.back()))
+        throw InputError(entry + ": '" + item + "' needs " + std::to_string(dim)
+                         + " start coordinates, " + std::to_string(dim)
+                         + " end coordinates and a number of points >= 2");
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        probe.start[d] = v[d];
+        probe.end[d] = v[dim + d];
+      }
+      const unsigned int n = static_cast<unsigned int>(v.back());
+      for (unsigned int i = 0; i < n; ++i)
+      {
+        Sample s;
+        s.position = probe.start + (probe.end - probe.start) * (double(i) / (n - 1));
+        probe.samples.push_back(s);
+      }
+      probes.push_back(probe);
+    }
+  }
+
+  template <int dim>
+  void LineProbes<dim>::locate(const Mapping<dim> &mapping, const DoFHandler<dim> &dof_handler)
+  {
+    const MPI_Comm     comm = dof_handler.get_communicator();
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    for (Probe &probe : probes)
+    {
+      std::vector<unsigned int> owner(probe.samples.size(), n_ranks);
+      for (unsigned int i = 0; i < probe.samples.size(); ++i)
+      {
+        Sample &s = probe.samples[i];
+        s.local = false;
+        try
+        {
+          const auto found
+              = GridTools::find_active_cell_around_point(mapping, dof_handler, s.position);
+          if (found.first.state() == IteratorState::valid && found.first->is_locally_owned())
+          {
+            s.cell = found.first;
+            s.unit_point = GeometryInfo<dim>::project_to_unit_cell(found.second);
+            owner[i] = rank;
+          }
+        }
+        catch (...)
+        {
+        }
+      }
+      {
+        std::vector<unsigned int> local_owner = owner;
+        Utilities::MPI::min(
+            ArrayView<const unsigned int>(local_owner), comm, ArrayView<unsigned int>(owner));
+      }
+      for (unsigned int i = 0; i < probe.samples.size(); ++i)
+      {
+        if (owner[i] == n_ranks)
+        {
+          std::ostringstream msg;
+          msg << "Postprocess/Line probes: point (" << probe.samples[i].position << ") of probe '"
+              << probe.name << "' is outside the workpiece";
+          throw InputError(msg.str());
+        }
+        probe.samples[i].local = owner[i] == rank;
+      }
+    }
+  }
+
+  template <int dim>
+  void LineProbes<dim>::write(const std::string                          &directory,
+                              const unsigned int                          counter,
+                              const double                                time,
+                              const Mapping<dim>                         &mapping,
+                              const DoFHandler<dim>                      &dof_handler,
+                              const TrilinosWrappers::MPI::Vector        &solution,
+                              const mechanics::MaterialPointStorage<dim> &material_points) const
+  {
+    const MPI_Comm comm = dof_handler.get_communicator();
+    for (const Probe &probe : probes)
+    {
+      // Each rank evaluates its samples: (index, values...).
+      std::vector<std::vector<double>> rows;
+      for (unsigned int i = 0; i < probe.samples.size(); ++i)
+      {
+        const Sample &s = probe.samples[i];
+        if (!s.local)
+          continue;
+        const Quadrature<dim> q(s.unit_point);
+        FEValues<dim>         fe_values(mapping, dof_handler.get_fe(), q, update_values);
+        fe_values.reinit(s.cell);
+        std::vector<Tensor<1, dim>> u(1);
+        fe_values[FEValuesExtractors::Vector(0)].get_function_values(solution, u);
+
+        const auto points = material_points.get_data(s.cell);
+        const auto weights = interpolation.weights(s.unit_point);
+        double     fields[6] = {0, 0, 0, 0, 0, 0};
+        for (unsigned int k = 0; k < points.size(); ++k)
+        {
+          const auto &st = points[k]->committed;
+          fields[0] += weights[k] * st.stress[0][0];
+          fields[1] += weights[k] * st.stress[1][1];
+          fields[2] += weights[k] * st.stress[2][2];
+          fields[3] += weights[k] * st.stress[0][1];
+          fields[4] += weights[k] * st.von_mises_stress();
+          fields[5] += weights[k] * st.equivalent_plastic_strain;
+        }
+        std::vector<double> row{double(i), s.position.distance(probe.start)};
+        for (unsigned int d = 0; d < dim; ++d)
+          row.push_back(s.position[d]);
+        for (unsigned int d = 0; d < dim; ++d)
+          row.push_back(u[0][d]);
+        row.insert(row.end(), fields, fields + 6);
+        rows.push_back(row);
+      }
+      const auto gathered = Utilities::MPI::gather(comm, rows, 0);
+      if (Utilities::MPI::this_mpi_process(comm) != 0)
+        continue;
+      std::vector<std::vector<double>> all;
+      for (const auto &part : gathered)
+        all.insert(all.end(), part.begin(), part.end());
+      std::sort(all.begin(), all.end());
+
+      std::ostringstream name;
+      name << directory << "/probe_" << probe.name << "_" << std::setw(4) << std::setfill('0')
+           << counter << ".csv";
+      std::ofstream out(name.str());
+      out << "time,s,x,y" << (dim == 3 ? ",z" : "") << ",ux,uy" << (dim == 3 ? ",uz" : "")
+          << ",stress_xx,stress_yy,stress_zz,stress_xy,von_mises_stress,equivalent_plastic_strain\n"
+          << std::setprecision(10);
+      for (const auto &row : all)
+      {
+        out << time;
+        for (unsigned int k = 1; k < row.size(); ++k)
+          out << ',' << row[k];
+        out << '\n';
+      }
+    }
+  }
+
+  template class LineProbes<2>;
+} // namespace ausroll::io

@@ -1,0 +1,82 @@
+#include <ausroll/core/exceptions.h>
+#include <ausroll/io/output_parameters.h>
+
+namespace ausroll::io
+{
+  using namespace dealii;
+
+  void OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry(
+        "Directory",
+        "output",
+        Patterns::Anything(),
+        "Directory for solution.pvd, the VTU files and history.csv (created if missing).");
+    prm.declare_entry("Interval",
+                      "1",
+                      Patterns::Integer(0),
+                      "Write VTU output every this many load steps (0: only the last step).");
+    prm.declare_entry(
+        "Write VTU", "true", Patterns::Bool(), "Write VTU/PVTU files and solution.pvd.");
+    prm.declare_entry("Deformed mesh",
+                      "false",
+                      Patterns::Bool(),
+                      "Place VTU points at their deformed positions (otherwise use ParaView's "
+                      "'Warp By Vector' with the displacement field).");
+    prm.declare_entry("Verbosity",
+                      "normal",
+                      Patterns::Selection("quiet|normal|verbose|regression"),
+                      "quiet: errors and summary; normal: a status line per step; verbose: plus "
+                      "Newton iterations; regression: deterministic lines for tests.");
+    prm.leave_subsection();
+  }
+
+  void OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    directory = prm.get("Directory");
+    interval = prm.get_integer("Interval");
+    write_vtu = prm.get_bool("Write VTU");
+    deformed_mesh = prm.get_bool("Deformed mesh");
+    const std::string v = prm.get("Verbosity");
+    verbosity = v == "quiet"     ? Verbosity::quiet
+                : v == "normal"  ? Verbosity::normal
+                : v == "verbose" ? Verbosity::verbose
+                                 : Verbosity::regression;
+    prm.leave_subsection();
+    require(!directory.empty(), "Output/Directory", "must not be empty");
+  }
+
+  void PostprocessParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Postprocess");
+    prm.declare_entry("Monitor points",
+                      "",
+                      Patterns::Anything(),
+                      "Points whose displacement goes to history.csv, as 'name: x, y; name2: x, y' "
+                      "(reference coordinates); columns name_ux, name_uy.");
+    prm.declare_entry("Reaction boundaries",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids whose total reaction force goes to history.csv "
+                      "(columns reaction_<id>_x, reaction_<id>_y; axisymmetric: full 2 pi).");
+    prm.declare_entry(
+        "Line probes",
+        "",
+        Patterns::Anything(),
+        "Straight lines 'name: x0, y0, x1, y1, n; ...' (reference coordinates, n points) "
+        "along which displacement, stress and plastic strain are written to "
+        "probe_<name>_NNNN.csv at every VTU output.");
+    prm.leave_subsection();
+  }
+
+  void PostprocessParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Postprocess");
+    monitor_points = prm.get("Monitor points");
+    reaction_boundaries = prm.get("Reaction boundaries");
+    line_probes = prm.get("Line probes");
+    prm.leave_subsection();
+  }
+} // namespace ausroll::io

@@ -1,0 +1,55 @@
+#include <ausroll/core/exceptions.h>
+#include <ausroll/material/constitutive_model.h>
+#include <ausroll/material/plane_stress_driver.h>
+#include <ausroll/material/small_strain_model.h>
+
+namespace ausroll::material
+{
+  KinematicsType parse_kinematics(const std::string &name)
+  {
+    if (name == "small strain")
+      return KinematicsType::small_strain;
+    if (name == "total Lagrangian")
+      return KinematicsType::total_lagrangian;
+    if (name == "updated Lagrangian")
+      return KinematicsType::updated_lagrangian;
+    if (name == "finite strain")
+      return KinematicsType::finite_strain;
+    throw InputError("Model/Kinematics: unknown kinematics '" + name + "'");
+  }
+
+  std::string to_string(const KinematicsType type)
+  {
+    switch (type)
+    {
+      case KinematicsType::small_strain:
+        return "small strain";
+      case KinematicsType::total_lagrangian:
+        return "total Lagrangian";
+      case KinematicsType::updated_lagrangian:
+        return "updated Lagrangian";
+      case KinematicsType::finite_strain:
+        return "finite strain";
+    }
+    return "";
+  }
+
+  std::unique_ptr<ConstitutiveModel> create_constitutive_model(const KinematicsType      kinematics,
+                                                               const MaterialParameters &material,
+                                                               const bool plane_stress)
+  {
+    std::unique_ptr<ConstitutiveModel> model;
+    switch (kinematics)
+    {
+      case KinematicsType::small_strain:
+        model = std::make_unique<SmallStrainModel>(create_plasticity_model(material));
+        break;
+      default:
+        throw InputError("Model/Kinematics: '" + to_string(kinematics)
+                         + "' is not available in this build yet");
+    }
+    if (plane_stress)
+      model = std::make_unique<PlaneStressDriver>(std::move(model));
+    return model;
+  }
+} // namespace ausroll::material

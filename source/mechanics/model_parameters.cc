@@ -1,0 +1,55 @@
+#include <ausroll/core/exceptions.h>
+#include <ausroll/mechanics/model_parameters.h>
+
+namespace ausroll::mechanics
+{
+  using namespace dealii;
+
+  void ModelParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Model");
+    prm.declare_entry(
+        "Kinematics",
+        "small strain",
+        Patterns::Selection("small strain|total Lagrangian|updated Lagrangian|finite strain"),
+        "Kinematic description: 'small strain' (infinitesimal), 'total Lagrangian' "
+        "(Green-Lagrange strain / 2nd Piola-Kirchhoff stress), 'updated Lagrangian' "
+        "(hypoelastic-plastic with Jaumann rate, as NOFEAP), 'finite strain' "
+        "(multiplicative J2 plasticity with logarithmic elastic strain).");
+    prm.declare_entry("Planar model",
+                      "plane strain",
+                      Patterns::Selection("plane strain|plane stress|axisymmetric"),
+                      "Two-dimensional idealisation. Axisymmetric: x is the radius, y the axis.");
+    prm.declare_entry("Thickness",
+                      "1",
+                      Patterns::Double(0.),
+                      "Out-of-plane thickness of plane strain / plane stress models (mm); reported "
+                      "forces are for this thickness. Axisymmetric forces are for the full 2 pi.");
+    prm.declare_entry("Polynomial degree",
+                      "2",
+                      Patterns::Integer(1, 4),
+                      "Degree p of the continuous Lagrange (FE_Q) displacement element.");
+    prm.declare_entry("Quadrature points",
+                      "0",
+                      Patterns::Integer(0, 6),
+                      "Gauss points per direction; 0 means degree + 1.");
+    prm.leave_subsection();
+  }
+
+  void ModelParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Model");
+    kinematics = material::parse_kinematics(prm.get("Kinematics"));
+    const std::string planar = prm.get("Planar model");
+    planar_model = planar == "plane strain"   ? PlanarModel::plane_strain
+                   : planar == "plane stress" ? PlanarModel::plane_stress
+                                              : PlanarModel::axisymmetric;
+    thickness = prm.get_double("Thickness");
+    degree = prm.get_integer("Polynomial degree");
+    quadrature_points = prm.get_integer("Quadrature points");
+    prm.leave_subsection();
+    require(thickness > 0., "Model/Thickness", "must be positive");
+    if (quadrature_points == 0)
+      quadrature_points = degree + 1;
+  }
+} // namespace ausroll::mechanics

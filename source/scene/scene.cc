@@ -1,0 +1,533 @@
+#include <ausroll/core/exceptions.h>
+#include <ausroll/core/parse_utilities.h>
+#include <ausroll/geometry/workpiece.h>
+#include <ausroll/scene/scene.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace ausroll::scene
+{
+  using namespace dealii;
+
+  namespace
+  {
+    using io::Verbosity;
+
+    bool prints(const Verbosity v, std::initializer_list<Verbosity> set, const unsigned int rank)
+    {
+      if (rank != 0)
+        return false;
+      for (const Verbosity s : set)
+        if (s == v)
+          return true;
+      return false;
+    }
+
+    std::string format_seconds(const double s)
+    {
+      std::ostringstream out;
+      out << std::fixed << std::setprecision(s < 10 ? 1 : 0) << s << " s";
+      return out.str();
+    }
+  } // namespace
+
+  template <int dim>
+  Scene<dim>::Scene(const SceneParameters &prm, const MPI_Comm comm)
+      : parameters(prm)
+      , comm(comm)
+      , rank(Utilities::MPI::this_mpi_process(comm))
+      , log(std::cout, prints(prm.output.verbosity, {Verbosity::normal, Verbosity::verbose}, rank))
+      , newton_log(std::cout, prints(prm.output.verbosity, {Verbosity::verbose}, rank))
+      , regression_log(std::cout, prints(prm.output.verbosity, {Verbosity::regression}, rank))
+      , timer(comm, log, TimerOutput::never, TimerOutput::wall_times)
+      , triangulation(comm,
+                      typename Triangulation<dim>::MeshSmoothing(
+                          Triangulation<dim>::smoothing_on_refinement
+                          | Triangulation<dim>::smoothing_on_coarsening))
+      , fe(FE_Q<dim>(prm.model.degree), dim)
+      , mapping(prm.model.degree)
+      , dof_handler(triangulation)
+      , kinematics(prm.model.planar_model, prm.model.thickness)
+      , model(material::create_constitutive_model(prm.model.kinematics,
+                                                  prm.material,
+                                                  prm.model.planar_model
+                                                      == mechanics::PlanarModel::plane_stress))
+      , boundary_conditions(prm.boundary_conditions)
+      , linear_solver(prm.solver.linear)
+      , newton(prm.solver)
+  {
+    TimerOutput::Scope scope(timer, "setup");
+    geometry::create_workpiece(parameters.geometry, triangulation);
+    assembler = std::make_unique<mechanics::Assembler<dim>>(
+        mapping, fe, parameters.model.quadrature_points, kinematics, *model, boundary_conditions);
+    setup_system();
+    setup_postprocessing();
+
+    // Output directory and files.
+    const std::string &dir = parameters.output.directory;
+    int                created = 1;
+    if (rank == 0)
+    {
+      std::error_code ec;
+      std::filesystem::create_directories(dir, ec);
+      created = !ec && std::filesystem::is_directory(dir);
+    }
+    if (Utilities::MPI::broadcast(comm, created, 0) == 0)
+      throw InputError("Output/Directory: cannot create '" + dir + "'");
+    history = std::make_unique<io::History>(comm, dir + "/history.csv");
+    writer = std::make_unique<io::SolutionWriter<dim>>(dir, comm);
+  }
+
+  template <int dim>
+  void Scene<dim>::setup_system()
+  {
+    dof_handler.distribute_dofs(fe);
+    owned_dofs = dof_handler.locally_owned_dofs();
+    relevant_dofs = DoFTools::extract_locally_relevant_dofs(dof_handler);
+
+    hanging_constraints.clear();
+    hanging_constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
+    hanging_constraints.close();
+
+    DynamicSparsityPattern dsp(relevant_dofs);
+    DoFTools::make_sparsity_pattern(
+        dof_handler, dsp, hanging_constraints, /*keep_constrained=*/true);
+    SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, relevant_dofs);
+    system_matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
+
+    for (auto *v : {&solution,
+                    &step_start,
+                    &newton_start,
+                    &increment,
+                    &rhs,
+                    &residual,
+                    &free_residual,
+                    &external_force})
+      v->reinit(owned_dofs, comm);
+    solution_ghosted.reinit(owned_dofs, relevant_dofs, comm);
+
+    // Material points on the locally owned cells, in the undeformed state.
+    const unsigned int n_q = assembler->quadrature().size();
+    material_points.initialize(triangulation.begin_active(), triangulation.end(), n_q);
+    double h_min = std::numeric_limits<double>::max();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        h_min = std::min(h_min, cell->minimum_vertex_distance());
+    min_cell_diameter = Utilities::MPI::min(h_min, comm);
+
+    linear_solver.set_rigid_body_modes(dof_handler, mapping);
+  }
+
+  template <int dim>
+  void Scene<dim>::setup_postprocessing()
+  {
+    const std::string entry = "Postprocess/Monitor points";
+    for (const auto &[name, point] :
+         parse_named_points<dim>(parameters.postprocess.monitor_points, entry))
+    {
+      MonitorPoint m;
+      m.name = name;
+      m.position = point;
+      unsigned int found_rank = Utilities::MPI::n_mpi_processes(comm);
+      try
+      {
+        const auto found = GridTools::find_active_cell_around_point(mapping, dof_handler, point);
+        if (found.first.state() == IteratorState::valid && found.first->is_locally_owned())
+        {
+          m.cell = found.first;
+          m.unit_point = GeometryInfo<dim>::project_to_unit_cell(found.second);
+          found_rank = rank;
+        }
+      }
+      catch (...)
+      {
+      }
+      const unsigned int owner = Utilities::MPI::min(found_rank, comm);
+      if (owner == Utilities::MPI::n_mpi_processes(comm))
+      {
+        std::ostringstream msg;
+        msg << entry << ": point '" << name << "' (" << point << ") is outside the workpiece";
+        throw InputError(msg.str());
+      }
+      m.local = owner == rank;
+      monitors.push_back(m);
+    }
+
+    for (const unsigned int id : parse_unsigned_list(parameters.postprocess.reaction_boundaries,
+                                                     "Postprocess/Reaction boundaries"))
+    {
+      std::array<IndexSet, dim> sets;
+      for (unsigned int c = 0; c < dim; ++c)
+      {
+        std::vector<bool> mask(dim, false);
+        mask[c] = true;
+        sets[c] = DoFTools::extract_boundary_dofs(
+            dof_handler, ComponentMask(mask), {static_cast<types::boundary_id>(id)});
+        sets[c] = sets[c] & owned_dofs;
+      }
+      reaction_boundaries.emplace_back(id, sets);
+    }
+
+    probes = std::make_unique<io::LineProbes<dim>>(parameters.postprocess.line_probes,
+                                                   parameters.model.quadrature_points);
+    probes->locate(mapping, dof_handler);
+  }
+
+  template <int dim>
+  void Scene<dim>::build_newton_constraints()
+  {
+    newton_constraints.clear();
+    newton_constraints.reinit(relevant_dofs);
+    newton_constraints.merge(hanging_constraints);
+    boundary_conditions.add_increment_constraints(
+        dof_handler, time, solution_ghosted, newton_constraints);
+    newton_constraints.close();
+
+    double violation = 0.;
+    for (const auto &line : newton_constraints.get_lines())
+      if (owned_dofs.is_element(line.index))
+        violation = std::max(violation, std::abs(line.inhomogeneity));
+    last_constraint_violation = Utilities::MPI::max(violation, comm);
+  }
+
+  template <int dim>
+  bool Scene<dim>::assemble(const bool with_matrix, std::string &message)
+  {
+    TimerOutput::Scope scope(timer, "assembly");
+    build_newton_constraints();
+
+    residual = 0.;
+    external_force = 0.;
+    free_residual = 0.;
+    mechanics::AssemblyTargets targets;
+    targets.residual = &residual;
+    targets.external_force = &external_force;
+    targets.free_residual = &free_residual;
+    if (with_matrix)
+    {
+      system_matrix = 0.;
+      rhs = 0.;
+      targets.matrix = &system_matrix;
+      targets.rhs = &rhs;
+    }
+    const mechanics::AssemblyStatus status = assembler->assemble(dof_handler,
+                                                                 solution_ghosted,
+                                                                 time,
+                                                                 material_points,
+                                                                 hanging_constraints,
+                                                                 newton_constraints,
+                                                                 nullptr,
+                                                                 targets);
+    if (!status.ok)
+    {
+      message = status.message;
+      return false;
+    }
+
+    // Force level: external loads and reactions (residual at prescribed DoFs).
+    double reaction_sq = 0.;
+    for (const auto i : owned_dofs)
+      if (newton_constraints.is_constrained(i) && !hanging_constraints.is_constrained(i))
+        reaction_sq += residual[i] * residual[i];
+    const double reaction_norm = std::sqrt(Utilities::MPI::sum(reaction_sq, comm));
+    last_residual_norm = free_residual.l2_norm();
+    last_reference_force = std::max(external_force.l2_norm(), reaction_norm);
+    return true;
+  }
+
+  template <int dim>
+  double Scene<dim>::residual_norm() const
+  {
+    return last_residual_norm;
+  }
+
+  template <int dim>
+  double Scene<dim>::reference_force() const
+  {
+    return last_reference_force;
+  }
+
+  template <int dim>
+  double Scene<dim>::constraint_violation() const
+  {
+    return last_constraint_violation;
+  }
+
+  template <int dim>
+  double Scene<dim>::length_scale() const
+  {
+    return min_cell_diameter;
+  }
+
+  template <int dim>
+  solver::LinearSolveInfo Scene<dim>::solve_for_increment()
+  {
+    TimerOutput::Scope scope(timer, "linear solve");
+    newton_start = solution;
+    increment = 0.;
+    const solver::LinearSolveInfo info = linear_solver.solve(system_matrix, increment, rhs);
+    newton_constraints.distribute(increment);
+    return info;
+  }
+
+  template <int dim>
+  void Scene<dim>::apply_increment(const double step_length)
+  {
+    solution = newton_start;
+    solution.add(step_length, increment);
+    solution_ghosted = solution;
+  }
+
+  template <int dim>
+  void Scene<dim>::commit_step()
+  {
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &point : material_points.get_data(cell))
+          point->commit();
+    step_start = solution;
+  }
+
+  template <int dim>
+  io::HistoryRow Scene<dim>::history_row(const solver::NewtonResult &result,
+                                         const unsigned int          cutbacks) const
+  {
+    io::HistoryRow row;
+    row.emplace_back("step", step_number);
+    row.emplace_back("time", time);
+    row.emplace_back("load_factor", time / parameters.loading.end_time);
+    row.emplace_back("newton_iterations", result.iterations);
+    row.emplace_back("cutbacks", cutbacks);
+    row.emplace_back("dofs", dof_handler.n_dofs());
+    row.emplace_back("cells", triangulation.n_global_active_cells());
+    row.emplace_back("wall_seconds", wall_clock.wall_time());
+
+    for (const auto &p : boundary_conditions.pressure_values(time))
+      row.push_back(p);
+
+    for (const MonitorPoint &m : monitors)
+    {
+      Tensor<1, dim> u;
+      if (m.local)
+      {
+        const Quadrature<dim> q(m.unit_point);
+        FEValues<dim>         fe_values(mapping, fe, q, update_values);
+        fe_values.reinit(m.cell);
+        std::vector<Tensor<1, dim>> values(1);
+        fe_values[FEValuesExtractors::Vector(0)].get_function_values(solution_ghosted, values);
+        u = values[0];
+      }
+      for (unsigned int d = 0; d < dim; ++d)
+        row.emplace_back(m.name + "_u" + std::string(1, "xyz"[d]), Utilities::MPI::sum(u[d], comm));
+    }
+
+    for (const auto &[id, sets] : reaction_boundaries)
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        double sum = 0.;
+        for (const auto i : sets[d])
+          sum += residual[i];
+        row.emplace_back("reaction_" + std::to_string(id) + "_" + std::string(1, "xyz"[d]),
+                         Utilities::MPI::sum(sum, comm));
+      }
+    return row;
+  }
+
+  template <int dim>
+  std::vector<io::CellField> Scene<dim>::cell_fields() const
+  {
+    const unsigned int         n = triangulation.n_active_cells();
+    std::vector<io::CellField> fields;
+    const char                *names[] = {"stress_xx", "stress_yy", "stress_zz", "stress_xy"};
+    for (const char *name : names)
+      fields.emplace_back(name, Vector<float>(n));
+    fields.emplace_back("von_mises_stress", Vector<float>(n));
+    fields.emplace_back("equivalent_plastic_strain", Vector<float>(n));
+    fields.emplace_back("subdomain", Vector<float>(n));
+
+    for (const auto &cell : triangulation.active_cell_iterators())
+    {
+      const unsigned int k = cell->active_cell_index();
+      fields[6].second[k] = cell->subdomain_id();
+      if (!cell->is_locally_owned())
+        continue;
+      const auto points = material_points.get_data(cell);
+      double     s[6] = {0, 0, 0, 0, 0, 0};
+      for (const auto &p : points)
+      {
+        const auto &st = p->committed;
+        s[0] += st.stress[0][0];
+        s[1] += st.stress[1][1];
+        s[2] += st.stress[2][2];
+        s[3] += st.stress[0][1];
+        s[4] += st.von_mises_stress();
+        s[5] += st.equivalent_plastic_strain;
+      }
+      for (unsigned int f = 0; f < 6; ++f)
+        fields[f].second[k] = s[f] / points.size();
+    }
+    return fields;
+  }
+
+  template <int dim>
+  void Scene<dim>::write_output()
+  {
+    if (last_output_step == static_cast<int>(step_number))
+      return;
+    TimerOutput::Scope scope(timer, "output");
+    probes->write(parameters.output.directory,
+                  output_counter,
+                  time,
+                  mapping,
+                  dof_handler,
+                  solution_ghosted,
+                  material_points);
+    if (parameters.output.write_vtu)
+      writer->write(output_counter,
+                    time,
+                    dof_handler,
+                    mapping,
+                    solution_ghosted,
+                    cell_fields(),
+                    parameters.output.deformed_mesh);
+    ++output_counter;
+    last_output_step = step_number;
+  }
+
+  template <int dim>
+  void Scene<dim>::run()
+  {
+    const solver::LoadingParameters &loading = parameters.loading;
+    const double                     nominal_dt = loading.end_time / loading.number_of_steps;
+
+    log << "ausroll: " << parameters.name << "  (" << Utilities::MPI::n_mpi_processes(comm)
+        << " MPI rank" << (Utilities::MPI::n_mpi_processes(comm) > 1 ? "s" : "") << ")\n"
+        << "  mesh: " << triangulation.n_global_active_cells() << " cells, " << dof_handler.n_dofs()
+        << " DoFs (FE_Q(" << parameters.model.degree << ") x " << dim << ")\n"
+        << "  kinematics: " << material::to_string(parameters.model.kinematics) << "\n"
+        << "  output: " << parameters.output.directory << "/" << std::endl;
+    regression_log << "scene: " << parameters.name
+                   << "\ncells: " << triangulation.n_global_active_cells()
+                   << "  dofs: " << dof_handler.n_dofs() << std::endl;
+
+    // Initial (undeformed) state.
+    solution = 0.;
+    solution_ghosted = solution;
+    step_start = solution;
+    time = 0.;
+    {
+      std::string message;
+      if (!assemble(false, message))
+        throw RunFailure("initial state: " + message);
+      solver::NewtonResult initial;
+      initial.converged = true;
+      history->add_row(history_row(initial, 0));
+      write_output();
+    }
+
+    double       dt = nominal_dt;
+    double       t_done = 0.;
+    const double t_end = loading.end_time;
+    while (t_done < t_end * (1. - 1e-12))
+    {
+      double dt_try = std::min(dt, t_end - t_done);
+      if (t_end - (t_done + dt_try) < 1e-6 * nominal_dt)
+        dt_try = t_end - t_done;
+
+      unsigned int         cutbacks = 0;
+      solver::NewtonResult result;
+      for (;;)
+      {
+        time = t_done + dt_try;
+        solution = step_start;
+        solution_ghosted = solution;
+        newton_log << "  step " << step_number + 1 << ", t = " << time << std::endl;
+        result = newton.solve(*this, newton_log);
+        if (result.converged)
+          break;
+
+        ++cutbacks;
+        log << "  step " << step_number + 1 << " (t = " << time << "): " << result.reason;
+        if (cutbacks > loading.max_cutbacks)
+        {
+          log << std::endl;
+          // Keep the last converged state in memory and on disk.
+          time = t_done;
+          solution = step_start;
+          solution_ghosted = solution;
+          write_output();
+          std::ostringstream msg;
+          msg << "load step " << step_number + 1 << " (t = " << t_done + dt_try
+              << ") did not converge after " << loading.max_cutbacks
+              << " cutbacks: " << result.reason << ". The last converged state (step "
+              << step_number << ", t = " << t_done << ") is in " << parameters.output.directory
+              << "/";
+          throw RunFailure(msg.str());
+        }
+        dt_try *= 0.5;
+        log << "; cutting back to dt = " << dt_try << std::endl;
+      }
+
+      commit_step();
+      ++step_number;
+      t_done = time;
+      const io::HistoryRow row = history_row(result, cutbacks);
+      history->add_row(row);
+
+      const double       elapsed = wall_clock.wall_time();
+      const double       fraction = t_done / t_end;
+      std::ostringstream percent;
+      percent << std::fixed << std::setprecision(1) << std::setw(5) << 100. * fraction;
+      log << "step " << std::setw(4) << step_number << "  t = " << std::setw(9) << t_done << "  ("
+          << percent.str() << "%)  Newton " << std::setw(2) << result.iterations << "  cutbacks "
+          << cutbacks << "  DoFs " << dof_handler.n_dofs() << "  elapsed "
+          << format_seconds(elapsed) << "  ETA "
+          << format_seconds(elapsed * (1. - fraction) / fraction) << std::endl;
+      std::ostringstream line;
+      line << "step " << step_number << std::setprecision(5);
+      for (const auto &entry : row)
+        if (entry.first != "wall_seconds" && entry.first != "step")
+          line << " " << entry.first << "=" << (std::abs(entry.second) < 1e-12 ? 0. : entry.second);
+      regression_log << line.str() << std::endl;
+
+      const unsigned int interval = parameters.output.interval;
+      if (interval > 0 && step_number % interval == 0)
+        write_output();
+
+      dt = cutbacks > 0 ? dt_try : std::min(nominal_dt, dt * loading.step_growth_factor);
+    }
+    write_output();
+
+    log << "finished: " << step_number << " steps in " << format_seconds(wall_clock.wall_time())
+        << "; history: " << parameters.output.directory << "/history.csv";
+    if (parameters.output.write_vtu)
+      log << ", ParaView: " << parameters.output.directory << "/solution.pvd";
+    log << std::endl;
+    if (parameters.output.verbosity != io::Verbosity::regression
+        && parameters.output.verbosity != io::Verbosity::quiet)
+      timer.print_summary();
+    regression_log << "finished: " << step_number << " steps" << std::endl;
+  }
+
+  void run_scene(const std::string &parameter_file, const MPI_Comm comm)
+  {
+    const SceneParameters parameters = read_parameter_file(parameter_file);
+    Scene<2>              scene(parameters, comm);
+    scene.run();
+  }
+
+  template class Scene<2>;
+} // namespace ausroll::scene

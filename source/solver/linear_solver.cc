@@ -1,0 +1,123 @@
+#include <ausroll/core/exceptions.h>
+#include <ausroll/solver/linear_solver.h>
+
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+
+#include <map>
+
+namespace ausroll::solver
+{
+  using namespace dealii;
+
+  template <int dim>
+  LinearSolver<dim>::LinearSolver(const LinearSolverParameters &parameters)
+      : parameters(parameters)
+  {
+  }
+
+  template <int dim>
+  void LinearSolver<dim>::set_rigid_body_modes(const DoFHandler<dim> &dof_handler,
+                                               const Mapping<dim>    &mapping)
+  {
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    const unsigned  n_modes = dim == 2 ? 3 : 6;
+    rigid_body_modes.assign(n_modes, std::vector<double>(owned.n_elements(), 0.));
+
+    std::map<types::global_dof_index, Point<dim>> points;
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
+    const FiniteElement<dim>            &fe = dof_handler.get_fe();
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          if (owned.is_element(dofs[i]))
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            const unsigned int row = owned.index_within_set(dofs[i]);
+            const Point<dim>  &x = points[dofs[i]];
+            rigid_body_modes[c][row] = 1.;
+            if (dim == 2)
+              rigid_body_modes[2][row] = (c == 0 ? -x[1] : x[0]);
+            else
+            {
+              // rotations about x, y, z: omega x r
+              const unsigned int a = (c + 1) % 3, b = (c + 2) % 3;
+              rigid_body_modes[3 + b][row] = x[a];
+              rigid_body_modes[3 + a][row] = -x[b];
+            }
+          }
+      }
+  }
+
+  template <int dim>
+  LinearSolveInfo LinearSolver<dim>::solve(const TrilinosWrappers::SparseMatrix &A,
+                                           TrilinosWrappers::MPI::Vector        &x,
+                                           const TrilinosWrappers::MPI::Vector  &b) const
+  {
+    Timer           timer;
+    LinearSolveInfo info;
+    try
+    {
+      if (parameters.type == LinearSolverType::direct)
+      {
+        SolverControl                                  control(1, 0.);
+        TrilinosWrappers::SolverDirect::AdditionalData data(
+            false, parameters.direct_package == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
+        TrilinosWrappers::SolverDirect solver(control, data);
+        solver.solve(A, x, b);
+      }
+      else
+      {
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic = true;
+        data.higher_order_elements = true;
+        data.smoother_sweeps = 2;
+        data.aggregation_threshold = 0.02;
+        Teuchos::ParameterList              list;
+        std::unique_ptr<Epetra_MultiVector> unused_modes;
+        data.set_parameters(list, unused_modes, A.trilinos_matrix());
+
+        const unsigned int n_local = A.local_range().second - A.local_range().first;
+        Epetra_MultiVector modes(A.trilinos_matrix().DomainMap(), rigid_body_modes.size());
+        if (!rigid_body_modes.empty() && rigid_body_modes[0].size() == n_local)
+        {
+          for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
+            for (unsigned int i = 0; i < n_local; ++i)
+              modes[m][i] = rigid_body_modes[m][i];
+          list.set("null space: type", "pre-computed");
+          list.set("null space: dimension", modes.NumVectors());
+          list.set("null space: vectors", modes.Values());
+        }
+        TrilinosWrappers::PreconditionAMG amg;
+        amg.initialize(A, list);
+
+        SolverControl                              control(parameters.max_iterations,
+                              parameters.relative_tolerance * b.l2_norm());
+        SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+            control,
+            SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(parameters.restart));
+        x = 0.;
+        gmres.solve(A, x, b, amg);
+        info.iterations = control.last_step();
+      }
+    }
+    catch (const std::exception &e)
+    {
+      throw RunFailure(std::string("linear solver failed: ") + e.what());
+    }
+    info.seconds = timer.wall_time();
+    return info;
+  }
+
+  template class LinearSolver<2>;
+} // namespace ausroll::solver

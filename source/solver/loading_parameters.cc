@@ -1,0 +1,40 @@
+#include <ausroll/core/exceptions.h>
+#include <ausroll/solver/loading_parameters.h>
+
+namespace ausroll::solver
+{
+  using namespace dealii;
+
+  void LoadingParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loading");
+    prm.declare_entry("End time", "1", Patterns::Double(), "Final pseudo-time of the run.");
+    prm.declare_entry("Number of steps",
+                      "10",
+                      Patterns::Integer(),
+                      "Nominal number of load steps (step size = End time / Number of steps).");
+    prm.declare_entry("Maximum cutbacks",
+                      "6",
+                      Patterns::Integer(0, 30),
+                      "How often a failing step may be halved before the run stops.");
+    prm.declare_entry(
+        "Step growth factor",
+        "1.5",
+        Patterns::Double(1.),
+        "After a cut-back step, later steps grow by this factor up to the nominal size.");
+    prm.leave_subsection();
+  }
+
+  void LoadingParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loading");
+    end_time = prm.get_double("End time");
+    const int steps = prm.get_integer("Number of steps");
+    max_cutbacks = prm.get_integer("Maximum cutbacks");
+    step_growth_factor = prm.get_double("Step growth factor");
+    prm.leave_subsection();
+    require(end_time > 0., "Loading/End time", "must be positive");
+    require(steps > 0, "Loading/Number of steps", "must be at least 1");
+    number_of_steps = steps;
+  }
+} // namespace ausroll::solver

@@ -1,0 +1,94 @@
+#include <ausroll/core/exceptions.h>
+#include <ausroll/solver/newton_solver.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace ausroll::solver
+{
+  NewtonSolver::NewtonSolver(const SolverParameters &parameters)
+      : parameters(parameters)
+  {
+  }
+
+  NewtonResult NewtonSolver::solve(NonlinearProblem &problem, dealii::ConditionalOStream &log) const
+  {
+    NewtonResult result;
+    std::string  message;
+    const double constraint_tolerance = 1e-10 * problem.length_scale();
+
+    if (!problem.assemble(true, message))
+    {
+      result.reason = message;
+      return result;
+    }
+    double first_norm = problem.residual_norm();
+
+    for (unsigned int it = 0;; ++it)
+    {
+      const double norm = problem.residual_norm();
+      const double reference = problem.reference_force();
+      const double tolerance
+          = std::max(parameters.absolute_tolerance, parameters.residual_tolerance * reference);
+      const bool constraints_ok = problem.constraint_violation() <= constraint_tolerance;
+      result.residual = norm;
+
+      log << "    Newton " << std::setw(2) << it << ": |r| = " << std::scientific
+          << std::setprecision(3) << norm << "  (tol " << tolerance << ")";
+      if (!constraints_ok)
+        log << "  constraint gap " << problem.constraint_violation();
+      log << std::defaultfloat << std::endl;
+
+      if (!std::isfinite(norm))
+      {
+        result.reason = "residual is not a finite number";
+        return result;
+      }
+      if (norm <= tolerance && constraints_ok && (it > 0 || norm == 0. || reference > 0.))
+      {
+        result.converged = true;
+        return result;
+      }
+      if (it >= parameters.max_newton_iterations)
+      {
+        std::ostringstream msg;
+        msg << "no convergence in " << parameters.max_newton_iterations
+            << " Newton iterations (|r| = " << norm << ", tolerance " << tolerance << ")";
+        result.reason = msg.str();
+        return result;
+      }
+      if (it > 1 && norm > parameters.divergence_factor * std::max(first_norm, tolerance))
+      {
+        result.reason = "Newton iteration diverges";
+        return result;
+      }
+
+      const LinearSolveInfo info = problem.solve_for_increment();
+      result.linear_iterations += info.iterations;
+      ++result.iterations;
+
+      // Full step first; backtrack only when the previous iterate satisfied the constraints
+      // (a step that imposes new prescribed displacements legitimately raises the residual).
+      double step = 1.;
+      problem.apply_increment(step);
+      bool admissible = problem.assemble(true, message);
+      if (parameters.line_search && constraints_ok)
+        for (unsigned int ls = 0; ls < 6; ++ls)
+        {
+          if (admissible && problem.residual_norm() <= (1. - 1e-4 * step) * norm)
+            break;
+          step *= 0.5;
+          problem.apply_increment(step);
+          admissible = problem.assemble(true, message);
+        }
+      if (!admissible)
+      {
+        result.reason = message;
+        return result;
+      }
+      if (it == 0)
+        first_norm = std::max(first_norm, problem.residual_norm());
+    }
+  }
+} // namespace ausroll::solver

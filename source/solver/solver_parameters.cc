@@ -1,0 +1,72 @@
+#include <ausroll/core/exceptions.h>
+#include <ausroll/solver/solver_parameters.h>
+
+namespace ausroll::solver
+{
+  using namespace dealii;
+
+  void SolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    prm.declare_entry("Maximum Newton iterations",
+                      "25",
+                      Patterns::Integer(1, 1000),
+                      "Newton iterations per load step before the step is cut back.");
+    prm.declare_entry("Residual tolerance",
+                      "1e-9",
+                      Patterns::Double(0.),
+                      "Convergence when the out-of-balance force of the free equations is below "
+                      "this fraction of the force level (max of external forces and reactions).");
+    prm.declare_entry("Absolute residual tolerance",
+                      "1e-10",
+                      Patterns::Double(0.),
+                      "Convergence when the out-of-balance force is below this value (N).");
+    prm.declare_entry(
+        "Divergence factor",
+        "1e6",
+        Patterns::Double(1.),
+        "A step is abandoned when the residual exceeds this multiple of its first value.");
+    prm.declare_entry(
+        "Line search", "true", Patterns::Bool(), "Backtracking line search on the residual norm.");
+    prm.enter_subsection("Linear solver");
+    prm.declare_entry(
+        "Type",
+        "direct",
+        Patterns::Selection("direct|iterative"),
+        "direct: sparse LU (Trilinos Amesos); iterative: GMRES + algebraic multigrid.");
+    prm.declare_entry("Direct solver package",
+                      "MUMPS",
+                      Patterns::Selection("MUMPS|KLU"),
+                      "Amesos package for Type = direct (MUMPS runs in parallel; KLU is serial).");
+    prm.declare_entry(
+        "Relative tolerance", "1e-10", Patterns::Double(0.), "Iterative solver tolerance.");
+    prm.declare_entry(
+        "Maximum iterations", "2000", Patterns::Integer(1), "Iterative solver limit.");
+    prm.declare_entry(
+        "GMRES restart", "200", Patterns::Integer(1), "Krylov vectors kept by GMRES.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  void SolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    max_newton_iterations = prm.get_integer("Maximum Newton iterations");
+    residual_tolerance = prm.get_double("Residual tolerance");
+    absolute_tolerance = prm.get_double("Absolute residual tolerance");
+    divergence_factor = prm.get_double("Divergence factor");
+    line_search = prm.get_bool("Line search");
+    prm.enter_subsection("Linear solver");
+    linear.type
+        = prm.get("Type") == "direct" ? LinearSolverType::direct : LinearSolverType::iterative;
+    linear.direct_package = prm.get("Direct solver package");
+    linear.relative_tolerance = prm.get_double("Relative tolerance");
+    linear.max_iterations = prm.get_integer("Maximum iterations");
+    linear.restart = prm.get_integer("GMRES restart");
+    prm.leave_subsection();
+    prm.leave_subsection();
+    require(residual_tolerance > 0. || absolute_tolerance > 0.,
+            "Solver/Residual tolerance",
+            "either the relative or the absolute tolerance must be positive");
+  }
+} // namespace ausroll::solver

@@ -1,0 +1,70 @@
+#!/usr/bin/env python3
+"""Compare two history.csv files column by column (e.g. an np=1 and an np=2 run of one scene).
+
+For every column present in both files (except those given with --ignore) and every row, the
+difference |a - b| is measured relative to the column's scale max_k max(|a_k|, |b_k|); the check
+fails if any relative difference exceeds --rel-tol, or if the files differ in rows or columns.
+
+Exit status: 0 agree, 1 differ, 2 usage/data error.
+"""
+
+import argparse
+import csv
+import sys
+
+
+def read(path):
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+    except OSError as e:
+        print(f"compare_histories.py: error: cannot read '{path}': {e.strerror}", file=sys.stderr)
+        sys.exit(2)
+    if not rows:
+        print(f"compare_histories.py: error: '{path}' has no rows", file=sys.stderr)
+        sys.exit(2)
+    return rows
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("first")
+    parser.add_argument("second")
+    parser.add_argument("--rel-tol", type=float, default=1e-8)
+    parser.add_argument("--ignore", nargs="*", default=["wall_seconds"])
+    args = parser.parse_args()
+
+    a, b = read(args.first), read(args.second)
+    if len(a) != len(b):
+        print(f"different number of rows: {len(a)} vs {len(b)}")
+        return 1
+    columns = [c for c in a[0].keys() if c not in args.ignore]
+    missing = [c for c in columns if c not in b[0]]
+    if missing:
+        print(f"columns missing in {args.second}: {missing}")
+        return 1
+
+    worst = (0.0, None, None)
+    for c in columns:
+        va = [float(r[c]) for r in a]
+        vb = [float(r[c]) for r in b]
+        scale = max(max(abs(x) for x in va), max(abs(x) for x in vb))
+        if scale == 0.0:
+            continue
+        for k, (x, y) in enumerate(zip(va, vb)):
+            d = abs(x - y) / scale
+            if d > worst[0]:
+                worst = (d, c, k)
+    d, c, k = worst
+    where = f" (column {c}, row {k})" if c else ""
+    print(f"{len(columns)} columns x {len(a)} rows compared; max relative difference {d:.3e}{where}; "
+          f"tolerance {args.rel_tol:g}")
+    if d > args.rel_tol:
+        print("FAILED")
+        return 1
+    print("passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
