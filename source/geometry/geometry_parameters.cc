@@ -11,10 +11,12 @@ namespace ausroll::geometry
     prm.enter_subsection("Geometry");
     prm.declare_entry("Type",
                       "quarter ring",
-                      Patterns::Selection("quarter ring|rectangle|mesh file"),
+                      Patterns::Selection("quarter ring|rectangle|quarter disk|mesh file"),
                       "Workpiece shape. Boundary ids: quarter ring: 0 inner arc, 1 outer arc, "
                       "2 edge on the x axis, 3 edge on the y axis; rectangle: 0 left, 1 right, "
-                      "2 bottom, 3 top; mesh file: the ids stored in the file.");
+                      "2 bottom, 3 top; quarter disk (the quarter below and right of the centre): "
+                      "0 arc, 1 top edge, 2 edge on the vertical axis; mesh file: the ids stored "
+                      "in the file.");
     prm.declare_entry("Global refinements",
                       "0",
                       Patterns::Integer(0, 12),
@@ -24,6 +26,32 @@ namespace ausroll::geometry
         "",
         Patterns::Anything(),
         "Mesh for Type = mesh file (Gmsh .msh or UCD .inp), relative to the .prm file.");
+
+    prm.declare_entry("Refinement point",
+                      "0, 0",
+                      Patterns::Anything(),
+                      "Centre of local refinement (e.g. the first contact point).");
+    prm.declare_entry(
+        "Refinement radius",
+        "0",
+        Patterns::Double(0.),
+        "Cells within this distance of the Refinement point are refined; the radius "
+        "shrinks by the Refinement radius factor with every level (0: no local refinement).");
+    prm.declare_entry(
+        "Refinement radius factor",
+        "0.5",
+        Patterns::Double(0.05, 1.),
+        "The refinement radius is multiplied by this factor from one level to the next.");
+    prm.declare_entry(
+        "Local refinements",
+        "0",
+        Patterns::Integer(0, 20),
+        "Levels of local refinement towards the Refinement point (after the global ones).");
+
+    prm.enter_subsection("Quarter disk");
+    prm.declare_entry("Center", "0, 1", Patterns::Anything(), "Centre of the disk (mm).");
+    prm.declare_entry("Radius", "1", Patterns::Double(0.), "Radius of the disk (mm).");
+    prm.leave_subsection();
 
     prm.enter_subsection("Quarter ring");
     prm.declare_entry("Inner radius", "100", Patterns::Double(0.), "Inner radius a (mm).");
@@ -49,9 +77,18 @@ namespace ausroll::geometry
   {
     prm.enter_subsection("Geometry");
     const std::string t = prm.get("Type");
-    type = t == "quarter ring" ? WorkpieceType::quarter_ring
-           : t == "rectangle"  ? WorkpieceType::rectangle
-                               : WorkpieceType::mesh_file;
+    type = t == "quarter ring"   ? WorkpieceType::quarter_ring
+           : t == "rectangle"    ? WorkpieceType::rectangle
+           : t == "quarter disk" ? WorkpieceType::quarter_disk
+                                 : WorkpieceType::mesh_file;
+    refinement_point = parse_point<2>(prm.get("Refinement point"), "Geometry/Refinement point");
+    refinement_radius = prm.get_double("Refinement radius");
+    local_refinements = prm.get_integer("Local refinements");
+    refinement_radius_factor = prm.get_double("Refinement radius factor");
+    prm.enter_subsection("Quarter disk");
+    disk_center = parse_point<2>(prm.get("Center"), "Geometry/Quarter disk/Center");
+    disk_radius = prm.get_double("Radius");
+    prm.leave_subsection();
     global_refinements = prm.get_integer("Global refinements");
     mesh_file = prm.get("Mesh file");
     if (!mesh_file.empty() && mesh_file[0] != '/')

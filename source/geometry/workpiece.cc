@@ -79,6 +79,77 @@ namespace ausroll::geometry
     }
   } // namespace
 
+  namespace
+  {
+    /**
+     * Lower-right quarter of a disk: x >= x_c, y <= y_c. Built from deal.II's three-cell quarter
+     * ball rotated by -90 degrees. Boundary ids: 0 arc, 1 top edge (y = y_c), 2 axis (x = x_c).
+     */
+    void quarter_disk(const GeometryParameters &p, Triangulation<2> &coarse)
+    {
+      require(p.disk_radius > 0., "Geometry/Quarter disk/Radius", "must be positive");
+      GridGenerator::quarter_hyper_ball(coarse, Point<2>(), p.disk_radius);
+      const Point<2> c = p.disk_center;
+      GridTools::transform([c](const Point<2> &x) { return Point<2>(c[0] + x[1], c[1] - x[0]); },
+                           coarse);
+      const double tol = 1e-8 * p.disk_radius;
+      for (const auto &cell : coarse.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+          {
+            const Point<2> m = face->center();
+            if (std::abs(m[1] - c[1]) < tol)
+              face->set_boundary_id(1);
+            else if (std::abs(m[0] - c[0]) < tol)
+              face->set_boundary_id(2);
+            else
+              face->set_boundary_id(0);
+          }
+    }
+
+    /** Manifolds of the quarter disk: polar on the arc, transfinite in the cells next to it. */
+    template <int dim>
+    void attach_disk_manifolds(const GeometryParameters &p, Triangulation<dim> &tria)
+    {
+      if constexpr (dim == 2)
+      {
+        tria.set_all_manifold_ids(numbers::flat_manifold_id);
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && face->boundary_id() == 0)
+            {
+              cell->set_all_manifold_ids(2);
+              face->set_manifold_id(1);
+            }
+        tria.set_manifold(1, PolarManifold<2>(p.disk_center));
+        TransfiniteInterpolationManifold<2> transfinite;
+        transfinite.initialize(tria);
+        tria.set_manifold(2, transfinite);
+      }
+    }
+
+    /** Refine towards `Refinement point`: level k refines cells closer than radius / 2^k. */
+    template <int dim>
+    void refine_towards_point(const GeometryParameters &p, Triangulation<dim> &tria)
+    {
+      if (p.refinement_radius <= 0. || p.local_refinements == 0)
+        return;
+      Point<dim> target;
+      for (unsigned int d = 0; d < std::min(dim, 2); ++d)
+        target[d] = p.refinement_point[d];
+      double radius = p.refinement_radius;
+      for (unsigned int level = 0; level < p.local_refinements;
+           ++level, radius *= p.refinement_radius_factor)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned()
+              && cell->center().distance(target) < radius + 0.5 * cell->diameter())
+            cell->set_refine_flag();
+        tria.execute_coarsening_and_refinement();
+      }
+    }
+  } // namespace
+
   template <int dim>
   void create_workpiece(const GeometryParameters &parameters, Triangulation<dim> &triangulation)
   {
@@ -89,6 +160,8 @@ namespace ausroll::geometry
     {
       if (parameters.type == WorkpieceType::quarter_ring)
         quarter_ring(parameters, coarse);
+      else if (parameters.type == WorkpieceType::quarter_disk)
+        quarter_disk(parameters, coarse);
       else
         rectangle(parameters, coarse);
     }
@@ -97,12 +170,17 @@ namespace ausroll::geometry
 
     triangulation.copy_triangulation(coarse);
     if constexpr (dim == 2)
+    {
       if (parameters.type == WorkpieceType::quarter_ring)
       {
         triangulation.set_all_manifold_ids(1);
         triangulation.set_manifold(1, PolarManifold<2>(Point<2>()));
       }
+      if (parameters.type == WorkpieceType::quarter_disk)
+        attach_disk_manifolds(parameters, triangulation);
+    }
     triangulation.refine_global(parameters.global_refinements);
+    refine_towards_point(parameters, triangulation);
   }
 
   template void create_workpiece<2>(const GeometryParameters &, Triangulation<2> &);

@@ -32,6 +32,7 @@ namespace ausroll::io
                                          const Mapping<dim>                  &mapping,
                                          const TrilinosWrappers::MPI::Vector &solution,
                                          const std::vector<CellField>        &cell_fields,
+                                         const std::vector<NodalField>       &nodal_fields,
                                          const bool                           deformed)
   {
     DataOut<dim> data_out;
@@ -40,6 +41,13 @@ namespace ausroll::io
     const std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
         dim, DataComponentInterpretation::component_is_part_of_vector);
     data_out.add_data_vector(solution, names, DataOut<dim>::type_dof_data, interpretation);
+    for (const NodalField &field : nodal_fields)
+      data_out.add_data_vector(
+          *field.second,
+          field.first,
+          DataOut<dim>::type_dof_data,
+          std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+              dim, DataComponentInterpretation::component_is_scalar));
     for (const CellField &field : cell_fields)
       data_out.add_data_vector(field.second, field.first, DataOut<dim>::type_cell_data);
 

@@ -65,6 +65,7 @@ namespace ausroll::scene
                                                   prm.model.planar_model
                                                       == mechanics::PlanarModel::plane_stress))
       , boundary_conditions(prm.boundary_conditions)
+      , contact(prm.contact)
       , linear_solver(prm.solver.linear)
       , newton(prm.solver)
   {
@@ -118,6 +119,7 @@ namespace ausroll::scene
                     &external_force})
       v->reinit(owned_dofs, comm);
     solution_ghosted.reinit(owned_dofs, relevant_dofs, comm);
+    residual_ghosted.reinit(owned_dofs, relevant_dofs, comm);
 
     // Material points on the locally owned cells, in the undeformed state.
     const unsigned int n_q = assembler->quadrature().size();
@@ -129,6 +131,11 @@ namespace ausroll::scene
     min_cell_diameter = Utilities::MPI::min(h_min, comm);
 
     linear_solver.set_rigid_body_modes(dof_handler, mapping);
+    contact.setup(
+        dof_handler,
+        mapping,
+        [this](const Point<dim> &x) { return kinematics.volume_factor(x); },
+        min_cell_diameter);
   }
 
   template <int dim>
@@ -194,12 +201,14 @@ namespace ausroll::scene
     newton_constraints.merge(hanging_constraints);
     boundary_conditions.add_increment_constraints(
         dof_handler, time, solution_ghosted, newton_constraints);
-    newton_constraints.close();
-
     double violation = 0.;
     for (const auto &line : newton_constraints.get_lines())
       if (owned_dofs.is_element(line.index))
         violation = std::max(violation, std::abs(line.inhomogeneity));
+    if (contact.active())
+      violation
+          = std::max(violation, contact.add_constraints(solution_ghosted, newton_constraints));
+    newton_constraints.close();
     last_constraint_violation = Utilities::MPI::max(violation, comm);
   }
 
@@ -207,34 +216,57 @@ namespace ausroll::scene
   bool Scene<dim>::assemble(const bool with_matrix, std::string &message)
   {
     TimerOutput::Scope scope(timer, "assembly");
-    build_newton_constraints();
+    const bool         active_set
+        = contact.active() && contact.strategy() == contact::ContactStrategy::active_set;
+    contact.set_time(time);
 
-    residual = 0.;
-    external_force = 0.;
-    free_residual = 0.;
-    mechanics::AssemblyTargets targets;
-    targets.residual = &residual;
-    targets.external_force = &external_force;
-    targets.free_residual = &free_residual;
-    if (with_matrix)
+    // With the active-set strategy, statuses that change at this iterate (judged by the reactions
+    // of this very assembly) require the constraints to be rebuilt and the system re-assembled.
+    for (unsigned int pass = 0;; ++pass)
     {
-      system_matrix = 0.;
-      rhs = 0.;
-      targets.matrix = &system_matrix;
-      targets.rhs = &rhs;
-    }
-    const mechanics::AssemblyStatus status = assembler->assemble(dof_handler,
-                                                                 solution_ghosted,
-                                                                 time,
-                                                                 material_points,
-                                                                 hanging_constraints,
-                                                                 newton_constraints,
-                                                                 nullptr,
-                                                                 targets);
-    if (!status.ok)
-    {
-      message = status.message;
-      return false;
+      if (contact.active())
+        contact.update_geometry(solution_ghosted, active_set);
+      build_newton_constraints();
+
+      residual = 0.;
+      external_force = 0.;
+      free_residual = 0.;
+      mechanics::AssemblyTargets targets;
+      targets.residual = &residual;
+      targets.external_force = &external_force;
+      targets.free_residual = &free_residual;
+      if (with_matrix)
+      {
+        system_matrix = 0.;
+        rhs = 0.;
+        targets.matrix = &system_matrix;
+        targets.rhs = &rhs;
+      }
+      const mechanics::AssemblyStatus status
+          = assembler->assemble(dof_handler,
+                                solution_ghosted,
+                                time,
+                                material_points,
+                                hanging_constraints,
+                                newton_constraints,
+                                contact.active() ? &contact.row_transforms() : nullptr,
+                                targets);
+      if (!status.ok)
+      {
+        message = status.message;
+        return false;
+      }
+      if (!contact.active())
+        break;
+      residual_ghosted = residual;
+      contact.compute_reactions(residual_ghosted);
+      if (!active_set || pass >= 4)
+        break;
+      const unsigned int changes = contact.update_statuses();
+      if (changes == 0)
+        break;
+      newton_log << "      contact: " << changes << " status change" << (changes > 1 ? "s" : "")
+                 << ", re-assembling" << std::endl;
     }
 
     // Force level: external loads and reactions (residual at prescribed DoFs).
@@ -299,6 +331,7 @@ namespace ausroll::scene
         for (const auto &point : material_points.get_data(cell))
           point->commit();
     step_start = solution;
+    contact.commit();
   }
 
   template <int dim>
@@ -343,6 +376,9 @@ namespace ausroll::scene
         row.emplace_back("reaction_" + std::to_string(id) + "_" + std::string(1, "xyz"[d]),
                          Utilities::MPI::sum(sum, comm));
       }
+
+    for (const auto &column : contact.history_columns())
+      row.push_back(column);
     return row;
   }
 
@@ -395,6 +431,26 @@ namespace ausroll::scene
                   dof_handler,
                   solution_ghosted,
                   material_points);
+    std::vector<io::NodalField>   nodal_fields;
+    TrilinosWrappers::MPI::Vector pressure_traction, status_gap;
+    if (contact.active())
+    {
+      std::ostringstream name;
+      name << parameters.output.directory << "/contact_" << std::setw(4) << std::setfill('0')
+           << output_counter << ".csv";
+      contact.write_csv(name.str(), comm);
+
+      TrilinosWrappers::MPI::Vector owned_a(owned_dofs, comm), owned_b(owned_dofs, comm);
+      contact.fill_output_vectors(owned_a, owned_b);
+      pressure_traction.reinit(owned_dofs, relevant_dofs, comm);
+      status_gap.reinit(owned_dofs, relevant_dofs, comm);
+      pressure_traction = owned_a;
+      status_gap = owned_b;
+      nodal_fields.emplace_back(std::vector<std::string>{"contact_pressure", "contact_traction"},
+                                &pressure_traction);
+      nodal_fields.emplace_back(std::vector<std::string>{"contact_status", "contact_gap"},
+                                &status_gap);
+    }
     if (parameters.output.write_vtu)
       writer->write(output_counter,
                     time,
@@ -402,9 +458,95 @@ namespace ausroll::scene
                     mapping,
                     solution_ghosted,
                     cell_fields(),
+                    nodal_fields,
                     parameters.output.deformed_mesh);
     ++output_counter;
     last_output_step = step_number;
+  }
+
+  template <int dim>
+  double Scene<dim>::solve_step(const double          t_start,
+                                double                dt,
+                                solver::NewtonResult &result,
+                                unsigned int         &cutbacks)
+  {
+    const solver::LoadingParameters &loading = parameters.loading;
+    const bool                       ratio_strategy
+        = contact.active() && contact.strategy() == contact::ContactStrategy::load_increment_ratio;
+    const double tolerance = parameters.contact.ratio_tolerance;
+    unsigned int substeps = 0;
+    cutbacks = 0;
+    if (ratio_strategy)
+    {
+      // Nodes that touch a die at the start of the step close before it (load factor zero).
+      time = t_start;
+      contact.set_time(time);
+      contact.update_geometry(solution_ghosted, false);
+      if (contact.close_touching_nodes() > 0)
+        contact.promote_statuses();
+    }
+    for (;;)
+    {
+      time = t_start + dt;
+      solution = step_start;
+      solution_ghosted = solution;
+      newton_log << "  step " << step_number + 1 << ", t = " << time << std::endl;
+      result = newton.solve(*this, newton_log);
+
+      if (!result.converged)
+      {
+        ++cutbacks;
+        contact.reset();
+        log << "  step " << step_number + 1 << " (t = " << time << "): " << result.reason;
+        if (cutbacks > loading.max_cutbacks)
+        {
+          log << std::endl;
+          // Keep the last converged state in memory and on disk.
+          time = t_start;
+          solution = step_start;
+          solution_ghosted = solution;
+          write_output();
+          std::ostringstream msg;
+          msg << "load step " << step_number + 1 << " (t = " << t_start + dt
+              << ") did not converge after " << loading.max_cutbacks
+              << " cutbacks: " << result.reason << ". The last converged state (step "
+              << step_number << ", t = " << t_start << ") is in " << parameters.output.directory
+              << "/";
+          throw RunFailure(msg.str());
+        }
+        dt *= 0.5;
+        log << "; cutting back to dt = " << dt << std::endl;
+        continue;
+      }
+      if (!ratio_strategy)
+        return time;
+
+      // Load-increment ratio (NOFEAP): end the step where the first contact status changes.
+      const double alpha = contact.event_ratio();
+      if (alpha >= 1. - tolerance || ++substeps > 200)
+      {
+        const unsigned int switched = contact.apply_events(1. + tolerance);
+        if (switched > 0)
+          newton_log << "      contact: " << switched << " status change(s) at the end of the step"
+                     << std::endl;
+        return time;
+      }
+      if (alpha * dt <= 1e-9 * loading.end_time)
+      {
+        // The change happens at the start of the step: switch and solve the step again.
+        const unsigned int switched = contact.apply_events(tolerance);
+        contact.promote_statuses();
+        newton_log << "      contact: " << switched << " status change(s) at the start of the step"
+                   << std::endl;
+        if (switched == 0)
+          return time;
+        continue;
+      }
+      contact.reset();
+      dt *= alpha;
+      newton_log << "      contact: next status change at alpha = " << alpha
+                 << ", step reduced to dt = " << dt << std::endl;
+    }
   }
 
   template <int dim>
@@ -432,6 +574,7 @@ namespace ausroll::scene
       std::string message;
       if (!assemble(false, message))
         throw RunFailure("initial state: " + message);
+      contact.commit(); // gaps of the undeformed state start the load-increment ratio
       solver::NewtonResult initial;
       initial.converged = true;
       history->add_row(history_row(initial, 0));
@@ -449,37 +592,9 @@ namespace ausroll::scene
 
       unsigned int         cutbacks = 0;
       solver::NewtonResult result;
-      for (;;)
-      {
-        time = t_done + dt_try;
-        solution = step_start;
-        solution_ghosted = solution;
-        newton_log << "  step " << step_number + 1 << ", t = " << time << std::endl;
-        result = newton.solve(*this, newton_log);
-        if (result.converged)
-          break;
-
-        ++cutbacks;
-        log << "  step " << step_number + 1 << " (t = " << time << "): " << result.reason;
-        if (cutbacks > loading.max_cutbacks)
-        {
-          log << std::endl;
-          // Keep the last converged state in memory and on disk.
-          time = t_done;
-          solution = step_start;
-          solution_ghosted = solution;
-          write_output();
-          std::ostringstream msg;
-          msg << "load step " << step_number + 1 << " (t = " << t_done + dt_try
-              << ") did not converge after " << loading.max_cutbacks
-              << " cutbacks: " << result.reason << ". The last converged state (step "
-              << step_number << ", t = " << t_done << ") is in " << parameters.output.directory
-              << "/";
-          throw RunFailure(msg.str());
-        }
-        dt_try *= 0.5;
-        log << "; cutting back to dt = " << dt_try << std::endl;
-      }
+      const double         t_start = t_done;
+      solve_step(t_start, dt_try, result, cutbacks);
+      dt_try = time - t_start;
 
       commit_step();
       ++step_number;
@@ -524,9 +639,20 @@ namespace ausroll::scene
 
   void run_scene(const std::string &parameter_file, const MPI_Comm comm)
   {
-    const SceneParameters parameters = read_parameter_file(parameter_file);
-    Scene<2>              scene(parameters, comm);
-    scene.run();
+    const SceneParameters     parameters = read_parameter_file(parameter_file);
+    std::unique_ptr<Scene<2>> scene = std::make_unique<Scene<2>>(parameters, comm);
+    try
+    {
+      scene->run();
+    }
+    catch (...)
+    {
+      // Destroy the scene while the exception is handled (not in flight), so that its timers
+      // and output close normally; then pass the error on.
+      const std::exception_ptr error = std::current_exception();
+      scene.reset();
+      std::rethrow_exception(error);
+    }
   }
 
   template class Scene<2>;

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace ausroll::solver
@@ -24,6 +25,7 @@ namespace ausroll::solver
       return result;
     }
     double first_norm = problem.residual_norm();
+    double previous_norm = std::numeric_limits<double>::infinity();
 
     for (unsigned int it = 0;; ++it)
     {
@@ -50,6 +52,15 @@ namespace ausroll::solver
         result.converged = true;
         return result;
       }
+      // Round-off floor: the residual no longer decreases although it is already tiny compared
+      // with the force level (ill-conditioned systems, e.g. a body held by one contact node).
+      if (it >= 2 && constraints_ok && norm <= 1e-6 * reference && norm > 0.5 * previous_norm)
+      {
+        log << "    (residual at round-off level, accepted)" << std::endl;
+        result.converged = true;
+        return result;
+      }
+      previous_norm = norm;
       if (it >= parameters.max_newton_iterations)
       {
         std::ostringstream msg;

@@ -17,6 +17,7 @@ namespace ausroll::geometry
   {
     quarter_ring, ///< quarter of an annulus (thick cylinder); subsection `Quarter ring`
     rectangle,    ///< axis-parallel rectangle (slab, block, cantilever, upsetting); `Rectangle`
+    quarter_disk, ///< lower-right quarter of a disk (cylinder on a flat: Hertz); `Quarter disk`
     mesh_file     ///< a mesh read from `Mesh file` (Gmsh .msh or UCD .inp)
   };
 
@@ -39,6 +40,16 @@ namespace ausroll::geometry
     dealii::Point<2>          lower_left{0., 0.};    ///< `Lower left corner`
     dealii::Point<2>          upper_right{1., 1.};   ///< `Upper right corner`
     std::vector<unsigned int> rectangle_cells{1, 1}; ///< `Cells` in x and y of the coarse mesh
+
+    // subsection `Quarter disk`
+    dealii::Point<2> disk_center{0., 1.}; ///< `Center`
+    double           disk_radius = 1.;    ///< `Radius`
+
+    // local refinement towards a point (any shape)
+    dealii::Point<2> refinement_point{0., 0.}; ///< `Refinement point`
+    double           refinement_radius = 0.;   ///< `Refinement radius` (0: no local refinement)
+    unsigned int     local_refinements = 0;    ///< `Local refinements` (levels)
+    double           refinement_radius_factor = 0.5; ///< `Refinement radius factor` per level
 
     /** Declare subsection `Geometry`. */
     static void declare_parameters(dealii::ParameterHandler &prm);

@@ -18,6 +18,11 @@ namespace ausroll::io
   /** A named cell-wise field (one value per active cell of the local triangulation). */
   using CellField = std::pair<std::string, dealii::Vector<float>>;
 
+  /** Scalar nodal fields stored in the components of a (ghosted) vector of the displacement DoFs:
+      one name per component. */
+  using NodalField
+      = std::pair<std::vector<std::string>, const dealii::TrilinosWrappers::MPI::Vector *>;
+
   /**
    * Writes `<dir>/solution_NNNN.pvtu` + `solution_NNNN.<rank>.vtu` (displacement as a vector field,
    * cell fields, MPI rank) and rewrites `<dir>/solution.pvd` atomically after each output, so
@@ -40,6 +45,7 @@ namespace ausroll::io
                       const dealii::Mapping<dim>                  &mapping,
                       const dealii::TrilinosWrappers::MPI::Vector &solution,
                       const std::vector<CellField>                &cell_fields,
+                      const std::vector<NodalField>               &nodal_fields,
                       const bool                                   deformed);
 
     /** Pairs (time, .pvtu file) written so far (for restarts). */

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <ausroll/contact/nodal_row_transform.h>
 #include <ausroll/material/constitutive_model.h>
 #include <ausroll/material/material_point.h>
 #include <ausroll/mechanics/boundary_conditions.h>
@@ -29,22 +30,8 @@ namespace ausroll::mechanics
       = dealii::CellDataStorage<typename dealii::Triangulation<dim>::cell_iterator,
                                 material::MaterialPoint>;
 
-  /**
-   * A linear map applied to the equilibrium rows of one node before constraints are condensed:
-   * rows(dofs) <- matrix * rows(dofs). The contact operator uses it to add Coulomb friction
-   * (t - mu s n) to the tangential equation of a slipping node, consistently in residual and
-   * tangent.
-   */
-  template <int dim>
-  struct NodalRowTransform
-  {
-    std::array<dealii::types::global_dof_index, dim> dofs;   ///< the node's DoFs, by component
-    dealii::Tensor<2, dim>                           matrix; ///< new rows = matrix * old rows
-  };
-
-  /** Row transforms keyed by the node's first (x-component) DoF. */
-  template <int dim>
-  using RowTransforms = std::map<dealii::types::global_dof_index, NodalRowTransform<dim>>;
+  using contact::NodalRowTransform;
+  using contact::RowTransforms;
 
   /** The vectors and matrices one assembly fills. */
   struct AssemblyTargets

@@ -5,6 +5,7 @@
  */
 #pragma once
 
+#include <ausroll/contact/contact_operator.h>
 #include <ausroll/io/history.h>
 #include <ausroll/io/line_probe.h>
 #include <ausroll/io/solution_writer.h>
@@ -74,6 +75,15 @@ namespace ausroll::scene
                                const unsigned int          cutbacks) const;
     /** Cell averages of stress and plastic strain for the VTU output. */
     std::vector<io::CellField> cell_fields() const;
+    /**
+     * Solve the load step from the committed state to time t_start + dt: Newton with cutbacks and,
+     * with the load-increment-ratio contact strategy, sub-steps that end at contact status changes.
+     * Returns the time reached (dt may shrink); throws RunFailure after too many cutbacks.
+     */
+    double solve_step(const double          t_start,
+                      double                dt,
+                      solver::NewtonResult &result,
+                      unsigned int         &cutbacks);
     /** Write VTU output of the current (converged) state. */
     void write_output();
     /** Locate the monitor points and collect the DoFs of the reaction boundaries. */
@@ -108,6 +118,7 @@ namespace ausroll::scene
     dealii::TrilinosWrappers::MPI::Vector  residual;         ///< f_int - f_ext (reactions)
     dealii::TrilinosWrappers::MPI::Vector  free_residual;    ///< condensed out-of-balance force
     dealii::TrilinosWrappers::MPI::Vector  external_force;   ///< surface loads
+    dealii::TrilinosWrappers::MPI::Vector  residual_ghosted; ///< residual with ghost entries
 
     mechanics::MaterialPointStorage<dim> material_points;
 
@@ -115,6 +126,7 @@ namespace ausroll::scene
     std::unique_ptr<material::ConstitutiveModel> model;
     mechanics::BoundaryConditions<dim>           boundary_conditions;
     std::unique_ptr<mechanics::Assembler<dim>>   assembler;
+    contact::ContactOperator<dim>                contact;
     solver::LinearSolver<dim>                    linear_solver;
     solver::NewtonSolver                         newton;
 

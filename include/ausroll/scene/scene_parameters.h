@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <ausroll/contact/contact_parameters.h>
 #include <ausroll/geometry/geometry_parameters.h>
 #include <ausroll/io/output_parameters.h>
 #include <ausroll/material/material_parameters.h>
@@ -28,6 +29,7 @@ namespace ausroll::scene
     mechanics::ModelParameters             model;                  ///< `Model`
     material::MaterialParameters           material;               ///< `Material`
     mechanics::BoundaryConditionParameters boundary_conditions;    ///< `Boundary conditions`
+    contact::ContactParameters             contact;                ///< `Contact`
     solver::LoadingParameters              loading;                ///< `Loading`
     solver::SolverParameters               solver;                 ///< `Solver`
     io::OutputParameters                   output;                 ///< `Output`

@@ -1,0 +1,226 @@
+/**
+ * @file contact_operator.h
+ * Node-to-segment contact of workpiece boundary nodes with rigid dies, adapted from Okamoto's
+ * contact element as used in NOFEAP: statuses open / stick / slip, turned into constraints
+ * and friction forces; reactions recovered from the residual.
+ */
+#pragma once
+
+#include <ausroll/contact/contact_parameters.h>
+#include <ausroll/contact/nodal_row_transform.h>
+#include <ausroll/contact/rigid_die.h>
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace ausroll::contact
+{
+  /** Contact status of a node. */
+  enum class ContactStatus
+  {
+    open = 0,  ///< no constraint
+    stick = 1, ///< both displacement components follow the die point where the node stuck
+    slip = 2   ///< normal gap zero, tangential force mu p_n opposing the slip
+  };
+
+  /**
+   * Contact between the workpiece and the rigid dies of subsection `Contact`.
+   *
+   * Candidates are the support points of the displacement element on the workpiece boundaries
+   * listed in each die's `Candidate boundaries`. Every Newton iterate, each node is projected onto
+   * the dies (closest point, signed gap, normal, tangent, die coordinate s). Closed nodes become
+   * inhomogeneous constraints on the Newton increment:
+   *  - stick: delta u = x_die(P, t) - x, P being the die point (die coordinates) where the node
+   * stuck;
+   *  - slip:  n . delta u = -gap, with the Coulomb force mu p_n opposing the slip added to the
+   *    tangential equation through a NodalRowTransform (consistent linearisation).
+   * The contact force on a node is its entry of the residual f_int - f_ext (the equilibrium
+   * equations of constrained DoFs are not solved, their residual is the reaction); R_n = n.R >= 0
+   * in compression, R_t = t.R.
+   *
+   * Status changes follow `Contact/Strategy`: active set (inside Newton: penetration closes a node,
+   * tension R_n < 0 opens it, |R_t| > mu R_n makes it slip, slip reversal makes it stick) or the
+   * load-increment ratio (statuses fixed during a sub-step; the step is scaled to the first status
+   * change, NOFEAP Appendix A).
+   *
+   * Works on the locally relevant nodes of each MPI rank; decisions depend only on ghosted data,
+   * so ranks sharing a node take the same decision.
+   */
+  template <int dim>
+  class ContactOperator
+  {
+  public:
+    /** Dies and strategy from @p parameters. */
+    explicit ContactOperator(const ContactParameters &parameters);
+
+    /** True if at least one die is defined. */
+    bool active() const { return !dies.empty(); }
+
+    /** The strategy (`Contact/Strategy`). */
+    ContactStrategy strategy() const { return parameters.strategy; }
+
+    /**
+     * Collect the candidate nodes of @p dof_handler and their tributary areas
+     * (integral of the nodal shape function over the candidate boundary, times
+     * @p volume_factor(x): 2 pi r for axisymmetric models). @p length_scale sets the gap tolerance.
+     * Statuses of nodes that existed before (same DoF index) are lost: call after every mesh change
+     * and before the first step.
+     */
+    void setup(const dealii::DoFHandler<dim>                           &dof_handler,
+               const dealii::Mapping<dim>                              &mapping,
+               const std::function<double(const dealii::Point<dim> &)> &volume_factor,
+               const double                                             length_scale);
+
+    /** Time of the current iterate (die poses). */
+    void set_time(const double t) { time = t; }
+
+    /**
+     * Project all nodes at displacement @p u (ghosted). With @p allow_closing, open nodes that
+     * penetrate a die close (stick, or slip if frictionless). Returns the number of closed nodes.
+     */
+    unsigned int update_geometry(const dealii::TrilinosWrappers::MPI::Vector &u,
+                                 const bool                                   allow_closing);
+
+    /**
+     * Add the constraints of the closed nodes to @p constraints (which may already hold Dirichlet
+     * lines: components constrained already are skipped). Returns the largest constraint violation
+     * (|gap| of slipping nodes, distance to the stick point of sticking nodes) over local nodes.
+     */
+    double add_constraints(const dealii::TrilinosWrappers::MPI::Vector &u,
+                           dealii::AffineConstraints<double>           &constraints) const;
+
+    /** Friction row transforms of the slipping nodes (recomputed by update_geometry()). */
+    const RowTransforms<dim> &row_transforms() const { return transforms; }
+
+    /** Store the nodal forces R = r(node) from the residual @p residual (ghosted). */
+    void compute_reactions(const dealii::TrilinosWrappers::MPI::Vector &residual);
+
+    /**
+     * Active set: change statuses by the force criteria (tension opens, |R_t| > mu R_n slips,
+     * reversed slip sticks). Call after compute_reactions(). Returns the number of changes over
+     * all ranks.
+     */
+    unsigned int update_statuses();
+
+    /**
+     * Load-increment ratio: the fraction alpha in [0, 1] of the current step at which the first
+     * node changes status, by linear interpolation between the committed state and the current
+     * iterate (NOFEAP Appendix A). 1 if no node changes. Same value on all ranks.
+     */
+    double event_ratio() const;
+
+    /**
+     * Load-increment ratio: switch the status of every node whose event lies at or before
+     * @p alpha_limit (fraction of the current step). Returns the number of switched nodes (global).
+     */
+    unsigned int apply_events(const double alpha_limit);
+
+    /** Accept the current statuses and geometry as the state at the end of a converged step. */
+    void commit();
+
+    /** Close the open nodes whose gap is zero (within round-off) at the current geometry.
+        Returns the number of nodes closed (global). */
+    unsigned int close_touching_nodes();
+
+    /** Make the current statuses the statuses at the start of the step (status changes at the
+        start of a load-increment-ratio step); gaps and forces of the committed state are kept. */
+    void promote_statuses();
+
+    /** Return to the committed statuses (step cut back). */
+    void reset();
+
+    /** Per die: force on the workpiece, pose, numbers of sticking/slipping nodes, contact length.
+     */
+    std::vector<std::pair<std::string, double>> history_columns() const;
+
+    /** Write `contact` CSV (one row per candidate node that is closed or within 1 element of a
+     * die). */
+    void write_csv(const std::string &filename, const MPI_Comm comm) const;
+
+    /**
+     * Nodal fields for VTU output on the DoFs of the displacement field: @p pressure_traction
+     * (x: contact pressure p_n, y: tangential traction t_t) and @p status_gap (x: status 0/1/2,
+     * y: gap). Vectors must be sized with the locally owned DoFs.
+     */
+    void fill_output_vectors(dealii::TrilinosWrappers::MPI::Vector &pressure_traction,
+                             dealii::TrilinosWrappers::MPI::Vector &status_gap) const;
+
+    /** Number of closed nodes (global). */
+    unsigned int n_closed(const MPI_Comm comm) const;
+
+  private:
+    struct Node
+    {
+      std::array<dealii::types::global_dof_index, dim> dofs; ///< DoFs by component
+      dealii::Point<dim>                               X;    ///< reference position
+      bool                                             owned = false;
+      double                                           area = 0.; ///< tributary area
+      std::vector<unsigned int>                        dies;      ///< candidate dies
+
+      // committed state (end of the last converged step)
+      ContactStatus    c_status = ContactStatus::open;
+      int              c_die = -1;
+      dealii::Point<2> c_stick;
+      int              c_sign = 0;
+      double           c_s = 0.;
+      double           c_gap = 0.;
+      bool             c_gap_valid = false;
+      double           c_Rn = 0., c_Rt = 0.;
+
+      // current iterate
+      ContactStatus          status = ContactStatus::open;
+      int                    die = -1;   ///< die in contact, or closest die (-1: none in range)
+      dealii::Point<2>       stick;      ///< die point of a sticking node (die coordinates)
+      int                    sign = 0;   ///< slip direction along the die tangent (+1/-1)
+      double                 s_ref = 0.; ///< die coordinate where the current slip started
+      DieProjection          projection; ///< projection on die `die` at the current iterate
+      dealii::Point<dim>     x;          ///< current position
+      dealii::Tensor<1, dim> R;          ///< nodal contact force (residual)
+      double                 Rn = 0., Rt = 0.;
+      unsigned int           changes = 0; ///< status changes in the current step
+    };
+
+    /** A status change of a node: at which fraction of the step, to which status. */
+    struct Event
+    {
+      double        alpha = std::numeric_limits<double>::infinity();
+      ContactStatus target = ContactStatus::open;
+    };
+
+    /** The next status change of node @p n (linear interpolation over the step). */
+    Event node_event(const Node &n) const;
+
+    /** Force of the die on node @p n: normal part from the residual, tangential part from the
+        residual (stick) or the friction law (slip). */
+    dealii::Tensor<1, dim> contact_force(const Node &n) const;
+
+    /** Switch node @p n to @p status at the current iterate. */
+    void switch_status(Node &n, const ContactStatus status);
+
+    /** Signed difference s1 - s0 on die @p die (wrapped on closed dies). */
+    double
+    die_coordinate_difference(const unsigned int die, const double s1, const double s0) const;
+
+    /** Rebuild the friction row transforms from the current statuses. */
+    void build_row_transforms();
+
+    ContactParameters                      parameters;
+    std::vector<std::unique_ptr<RigidDie>> dies;
+    std::vector<Node>                      nodes;
+    RowTransforms<dim>                     transforms;
+    MPI_Comm                               comm = MPI_COMM_WORLD;
+    double                                 time = 0.;
+    double                                 gap_tolerance = 1e-10;
+    double                                 force_tolerance = 0.;
+  };
+} // namespace ausroll::contact

@@ -1,0 +1,591 @@
+#include <ausroll/contact/contact_operator.h>
+#include <ausroll/core/exceptions.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <map>
+
+namespace ausroll::contact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    constexpr double infinity = std::numeric_limits<double>::infinity();
+
+    template <int dim>
+    Point<2> to_2d(const Point<dim> &p)
+    {
+      return Point<2>(p[0], p[1]);
+    }
+  } // namespace
+
+  template <int dim>
+  ContactOperator<dim>::ContactOperator(const ContactParameters &parameters)
+      : parameters(parameters)
+  {
+    static_assert(dim == 2, "rigid dies are two-dimensional");
+    for (unsigned int k = 0; k < parameters.dies.size(); ++k)
+      dies.push_back(std::make_unique<RigidDie>(parameters.dies[k], k));
+  }
+
+  template <int dim>
+  void ContactOperator<dim>::setup(const DoFHandler<dim>                           &dof_handler,
+                                   const Mapping<dim>                              &mapping,
+                                   const std::function<double(const Point<dim> &)> &volume_factor,
+                                   const double                                     length_scale)
+  {
+    nodes.clear();
+    transforms.clear();
+    gap_tolerance = 1e-9 * length_scale;
+    if (!active())
+      return;
+
+    const FiniteElement<dim> &fe = dof_handler.get_fe();
+    const Quadrature<dim - 1> support(fe.get_unit_face_support_points());
+    FEFaceValues<dim>         support_values(mapping, fe, support, update_quadrature_points);
+    const QGauss<dim - 1>     gauss(fe.degree + 1);
+    FEFaceValues<dim>         area_values(
+        mapping, fe, gauss, update_values | update_quadrature_points | update_JxW_values);
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
+
+    std::unordered_map<types::global_dof_index, unsigned int> index_of;
+    std::vector<types::global_dof_index>                      face_dofs(fe.n_dofs_per_face());
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+    {
+      if (cell->is_artificial())
+        continue;
+      for (const auto f : cell->face_indices())
+      {
+        if (!cell->face(f)->at_boundary())
+          continue;
+        const unsigned int        id = cell->face(f)->boundary_id();
+        std::vector<unsigned int> candidate_dies;
+        for (unsigned int k = 0; k < dies.size(); ++k)
+          if (dies[k]->is_candidate(id))
+            candidate_dies.push_back(k);
+        if (candidate_dies.empty())
+          continue;
+
+        cell->face(f)->get_dof_indices(face_dofs);
+        support_values.reinit(cell, f);
+        area_values.reinit(cell, f);
+        // group the face DoFs by support point
+        std::map<unsigned int, std::array<unsigned int, dim>> by_point;
+        for (unsigned int i = 0; i < face_dofs.size(); ++i)
+        {
+          const auto ci = fe.face_system_to_component_index(i);
+          by_point[ci.second][ci.first] = i;
+        }
+        for (const auto &[point, local] : by_point)
+        {
+          const types::global_dof_index key = face_dofs[local[0]];
+          auto                          it = index_of.find(key);
+          if (it == index_of.end())
+          {
+            Node n;
+            for (unsigned int c = 0; c < dim; ++c)
+              n.dofs[c] = face_dofs[local[c]];
+            n.X = support_values.quadrature_point(local[0]);
+            n.x = n.X;
+            n.owned = owned.is_element(key);
+            it = index_of.emplace(key, nodes.size()).first;
+            nodes.push_back(n);
+          }
+          Node &n = nodes[it->second];
+          for (const unsigned int k : candidate_dies)
+            if (std::find(n.dies.begin(), n.dies.end(), k) == n.dies.end())
+              n.dies.push_back(k);
+          // tributary area: integral of the nodal shape function over the face
+          if (cell->is_locally_owned())
+            for (unsigned int q = 0; q < gauss.size(); ++q)
+              n.area += area_values.shape_value_component(fe.face_to_cell_index(local[0], f), q, 0)
+                        * area_values.JxW(q) * volume_factor(area_values.quadrature_point(q));
+        }
+      }
+    }
+    // The area of a node shared by cells of different ranks: sum over ranks (owned nodes only need
+    // it). Each face is integrated by the rank owning its cell; gather the contributions.
+    std::map<types::global_dof_index, double> partial;
+    for (const Node &n : nodes)
+      if (n.area != 0.)
+        partial[n.dofs[0]] = n.area;
+    comm = dof_handler.get_communicator();
+    const auto gathered = Utilities::MPI::all_gather(comm, partial);
+    for (Node &n : nodes)
+    {
+      n.area = 0.;
+      for (const auto &part : gathered)
+      {
+        const auto it = part.find(n.dofs[0]);
+        if (it != part.end())
+          n.area += it->second;
+      }
+    }
+  }
+
+  template <int dim>
+  unsigned int ContactOperator<dim>::update_geometry(const TrilinosWrappers::MPI::Vector &u,
+                                                     const bool allow_closing)
+  {
+    unsigned int closed = 0;
+    for (Node &n : nodes)
+    {
+      for (unsigned int c = 0; c < dim; ++c)
+        n.x[c] = n.X[c] + u[n.dofs[c]];
+      if (n.status != ContactStatus::open)
+        n.projection = dies[n.die]->project(to_2d(n.x), time);
+      else
+      {
+        n.projection = DieProjection();
+        n.die = -1;
+        for (const unsigned int k : n.dies)
+        {
+          const DieProjection p = dies[k]->project(to_2d(n.x), time);
+          if (p.valid && (!n.projection.valid || p.gap < n.projection.gap))
+          {
+            n.projection = p;
+            n.die = k;
+          }
+        }
+        if (allow_closing && n.projection.valid
+            && n.projection.gap < (n.changes == 0 ? gap_tolerance : -gap_tolerance)
+            && n.changes < parameters.max_status_changes)
+          switch_status(n,
+                        dies[n.die]->friction == FrictionLaw::frictionless ? ContactStatus::slip
+                                                                           : ContactStatus::stick);
+      }
+      if (n.status != ContactStatus::open)
+        ++closed;
+    }
+    build_row_transforms();
+    return closed;
+  }
+
+  template <int dim>
+  void ContactOperator<dim>::switch_status(Node &n, const ContactStatus status)
+  {
+    if (status == n.status)
+      return;
+    ++n.changes;
+    if (status == ContactStatus::stick)
+      // A node that stops slipping sticks where its slip started (no relative motion over the
+      // step); a node that closes sticks where it meets the die.
+      n.stick = n.status == ContactStatus::slip ? dies[n.die]->die_surface().point_at(n.s_ref)
+                                                : n.projection.local_point;
+    if (status == ContactStatus::slip)
+    {
+      // direction of the slip along the die tangent: opposite to the tangential force
+      n.sign = n.Rt > 0. ? -1 : (n.Rt < 0. ? 1 : 0);
+      n.s_ref = n.status == ContactStatus::stick ? dies[n.die]->die_surface().project(n.stick).s
+                                                 : n.projection.s;
+    }
+    if (status == ContactStatus::open)
+      n.sign = 0;
+    n.status = status;
+  }
+
+  template <int dim>
+  double ContactOperator<dim>::die_coordinate_difference(const unsigned int die,
+                                                         const double       s1,
+                                                         const double       s0) const
+  {
+    double            d = s1 - s0;
+    const DieSurface &surface = dies[die]->die_surface();
+    if (surface.is_closed())
+    {
+      const double L = surface.total_length();
+      if (d > 0.5 * L)
+        d -= L;
+      else if (d < -0.5 * L)
+        d += L;
+    }
+    return d;
+  }
+
+  template <int dim>
+  void ContactOperator<dim>::build_row_transforms()
+  {
+    transforms.clear();
+    for (const Node &n : nodes)
+      if (n.status == ContactStatus::slip && dies[n.die]->friction == FrictionLaw::coulomb
+          && n.sign != 0)
+      {
+        NodalRowTransform<dim> t;
+        t.dofs = n.dofs;
+        const double mu = dies[n.die]->mu;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            t.matrix[i][j] = (i == j ? 1. : 0.)
+                             + mu * n.sign * n.projection.tangent[i] * n.projection.normal[j];
+        transforms.emplace(n.dofs[0], t);
+      }
+  }
+
+  template <int dim>
+  double ContactOperator<dim>::add_constraints(const TrilinosWrappers::MPI::Vector &u,
+                                               AffineConstraints<double> &constraints) const
+  {
+    (void)u;
+    double violation = 0.;
+    for (const Node &n : nodes)
+    {
+      if (n.status == ContactStatus::stick)
+      {
+        const Point<2> target = dies[n.die]->material_point(n.stick, time);
+        for (unsigned int c = 0; c < dim; ++c)
+          if (!constraints.is_constrained(n.dofs[c]))
+          {
+            constraints.add_line(n.dofs[c]);
+            constraints.set_inhomogeneity(n.dofs[c], target[c] - n.x[c]);
+            if (n.owned)
+              violation = std::max(violation, std::abs(target[c] - n.x[c]));
+          }
+      }
+      else if (n.status == ContactStatus::slip)
+      {
+        const Tensor<1, 2> &normal = n.projection.normal;
+        // constrain the component with the larger normal entry that is still free
+        const unsigned int first = std::abs(normal[0]) >= std::abs(normal[1]) ? 0 : 1;
+        unsigned int       k = first;
+        if (constraints.is_constrained(n.dofs[k]))
+          k = 1 - first;
+        if (constraints.is_constrained(n.dofs[k]) || std::abs(normal[k]) < 1e-12)
+          continue;
+        const unsigned int j = 1 - k;
+        constraints.add_line(n.dofs[k]);
+        constraints.add_entry(n.dofs[k], n.dofs[j], -normal[j] / normal[k]);
+        constraints.set_inhomogeneity(n.dofs[k], -n.projection.gap / normal[k]);
+        if (n.owned)
+          violation = std::max(violation, std::abs(n.projection.gap));
+      }
+    }
+    return violation;
+  }
+
+  template <int dim>
+  void ContactOperator<dim>::compute_reactions(const TrilinosWrappers::MPI::Vector &residual)
+  {
+    double largest = 0.;
+    for (Node &n : nodes)
+    {
+      for (unsigned int c = 0; c < dim; ++c)
+        n.R[c] = residual[n.dofs[c]];
+      if (n.status != ContactStatus::open || n.projection.valid)
+      {
+        n.Rn = n.R * n.projection.normal;
+        n.Rt = n.R * n.projection.tangent;
+      }
+      else
+        n.Rn = n.Rt = 0.;
+      if (n.status != ContactStatus::open)
+        largest = std::max(largest, n.R.norm());
+    }
+    // Forces below this are round-off (the residual of the free equations is ~1e-10 of them).
+    force_tolerance = 1e-8 * Utilities::MPI::max(largest, comm);
+  }
+
+  template <int dim>
+  unsigned int ContactOperator<dim>::update_statuses()
+  {
+    unsigned int changes = 0;
+    for (Node &n : nodes)
+    {
+      if (n.status == ContactStatus::open || n.changes >= parameters.max_status_changes)
+        continue;
+      const RigidDie &die = *dies[n.die];
+      ContactStatus   target = n.status;
+      if (n.Rn < -force_tolerance)
+        target = ContactStatus::open;
+      else if (n.status == ContactStatus::stick && die.friction == FrictionLaw::coulomb
+               && std::abs(n.Rt) > die.mu * n.Rn + force_tolerance)
+        target = ContactStatus::slip;
+      else if (n.status == ContactStatus::slip && die.friction == FrictionLaw::coulomb
+               && n.sign * die_coordinate_difference(n.die, n.projection.s, n.s_ref)
+                      < -gap_tolerance)
+        target = ContactStatus::stick;
+      if (target != n.status)
+      {
+        switch_status(n, target);
+        if (n.owned)
+          ++changes;
+      }
+    }
+    build_row_transforms();
+    return Utilities::MPI::sum(changes, comm);
+  }
+
+  template <int dim>
+  typename ContactOperator<dim>::Event ContactOperator<dim>::node_event(const Node &n) const
+  {
+    // Linear interpolation between the committed state (fraction 0) and the iterate (fraction 1)
+    // (NOFEAP Appendix A); an event counts only when the quantity moves towards its threshold.
+    Event event;
+    if (n.changes >= parameters.max_status_changes)
+      return event;
+    if (n.status == ContactStatus::open)
+    {
+      if (!n.projection.valid)
+        return event;
+      const double g1 = n.projection.gap;
+      event.target = dies[n.die]->friction == FrictionLaw::frictionless ? ContactStatus::slip
+                                                                        : ContactStatus::stick;
+      if (n.c_gap_valid && n.c_die == n.die && n.c_gap >= 0. && g1 < n.c_gap)
+        event.alpha = n.c_gap / (n.c_gap - g1); // open -> closed: the gap closes
+      else if (g1 < -gap_tolerance)
+        event.alpha = 0.; // penetrating without a history: close at once
+      return event;
+    }
+
+    const RigidDie &die = *dies[n.die];
+    const double    dRn = n.Rn - n.c_Rn;
+    // closed -> open: the normal force becomes tensile
+    if (dRn < 0. && n.c_Rn >= 0.)
+      event = Event{n.c_Rn / -dRn, ContactStatus::open};
+    else if (n.Rn < -force_tolerance)
+      event = Event{0., ContactStatus::open};
+    if (die.friction != FrictionLaw::coulomb)
+      return event;
+    if (n.status == ContactStatus::stick)
+    {
+      // stick -> slip: s R_t reaches mu R_n (s = sign of the final tangential force)
+      const double s = n.Rt >= 0. ? 1. : -1.;
+      const double f0 = s * n.c_Rt - die.mu * n.c_Rn;
+      const double df = s * (n.Rt - n.c_Rt) - die.mu * dRn;
+      if (df > 0.)
+      {
+        const double alpha = f0 >= 0. ? 0. : -f0 / df;
+        if (alpha < event.alpha)
+          event = Event{alpha, ContactStatus::slip};
+      }
+    }
+    else if (n.sign * die_coordinate_difference(n.die, n.projection.s, n.s_ref) < -gap_tolerance)
+      event = Event{0., ContactStatus::stick}; // slip reversal: switch at once (load factor zero)
+    return event;
+  }
+
+  template <int dim>
+  double ContactOperator<dim>::event_ratio() const
+  {
+    double alpha = 1.;
+    for (const Node &n : nodes)
+      if (n.owned)
+        alpha = std::min(alpha, node_event(n).alpha);
+    return Utilities::MPI::min(alpha, comm);
+  }
+
+  template <int dim>
+  unsigned int ContactOperator<dim>::apply_events(const double alpha_limit)
+  {
+    unsigned int switched = 0;
+    for (Node &n : nodes)
+    {
+      const Event event = node_event(n);
+      if (event.alpha > alpha_limit)
+        continue;
+      switch_status(n, event.target);
+      if (n.owned)
+        ++switched;
+    }
+    build_row_transforms();
+    return Utilities::MPI::sum(switched, comm);
+  }
+
+  template <int dim>
+  void ContactOperator<dim>::commit()
+  {
+    for (Node &n : nodes)
+    {
+      n.c_status = n.status;
+      n.c_die = n.die;
+      n.c_stick = n.stick;
+      n.c_sign = n.sign;
+      n.c_s = n.projection.s;
+      n.c_gap = n.projection.gap;
+      n.c_gap_valid = n.projection.valid;
+      n.c_Rn = n.status == ContactStatus::open ? 0. : n.Rn;
+      n.c_Rt = n.status == ContactStatus::open ? 0. : n.Rt;
+      n.changes = 0;
+      if (n.status == ContactStatus::slip)
+        n.s_ref = n.projection.s;
+    }
+  }
+
+  template <int dim>
+  unsigned int ContactOperator<dim>::close_touching_nodes()
+  {
+    unsigned int closed = 0;
+    for (Node &n : nodes)
+      if (n.status == ContactStatus::open && n.projection.valid && n.projection.gap < gap_tolerance)
+      {
+        switch_status(n,
+                      dies[n.die]->friction == FrictionLaw::frictionless ? ContactStatus::slip
+                                                                         : ContactStatus::stick);
+        if (n.owned)
+          ++closed;
+      }
+    build_row_transforms();
+    return Utilities::MPI::sum(closed, comm);
+  }
+
+  template <int dim>
+  void ContactOperator<dim>::promote_statuses()
+  {
+    for (Node &n : nodes)
+    {
+      n.c_status = n.status;
+      n.c_die = n.die;
+      n.c_stick = n.stick;
+      n.c_sign = n.sign;
+      if (n.status == ContactStatus::slip)
+        n.c_s = n.s_ref;
+    }
+  }
+
+  template <int dim>
+  void ContactOperator<dim>::reset()
+  {
+    for (Node &n : nodes)
+    {
+      n.status = n.c_status;
+      n.die = n.c_die;
+      n.stick = n.c_stick;
+      n.sign = n.c_sign;
+      n.s_ref = n.c_s;
+      n.changes = 0;
+      n.Rn = n.c_Rn;
+      n.Rt = n.c_Rt;
+    }
+    build_row_transforms();
+  }
+
+  template <int dim>
+  std::vector<std::pair<std::string, double>> ContactOperator<dim>::history_columns() const
+  {
+    std::vector<std::pair<std::string, double>> columns;
+    for (unsigned int k = 0; k < dies.size(); ++k)
+    {
+      Tensor<1, dim> force;
+      double         n_stick = 0, n_slip = 0, s_min = infinity, s_max = -infinity;
+      for (const Node &n : nodes)
+        if (n.owned && n.status != ContactStatus::open && n.die == static_cast<int>(k))
+        {
+          force += contact_force(n);
+          (n.status == ContactStatus::stick ? n_stick : n_slip) += 1;
+          s_min = std::min(s_min, n.projection.s);
+          s_max = std::max(s_max, n.projection.s);
+        }
+      const std::string p = "die_" + dies[k]->name + "_";
+      const DiePose     pose = dies[k]->pose(time);
+      for (unsigned int d = 0; d < dim; ++d)
+        columns.emplace_back(p + "force_" + std::string(1, "xyz"[d]),
+                             Utilities::MPI::sum(force[d], comm));
+      columns.emplace_back(p + "x", pose.reference_position()[0]);
+      columns.emplace_back(p + "y", pose.reference_position()[1]);
+      columns.emplace_back(p + "angle", pose.angle() * 180. / M_PI);
+      columns.emplace_back(p + "stick_nodes", Utilities::MPI::sum(n_stick, comm));
+      columns.emplace_back(p + "slip_nodes", Utilities::MPI::sum(n_slip, comm));
+      s_min = Utilities::MPI::min(s_min, comm);
+      s_max = Utilities::MPI::max(s_max, comm);
+      columns.emplace_back(p + "contact_length", s_max >= s_min ? s_max - s_min : 0.);
+    }
+    return columns;
+  }
+
+  template <int dim>
+  Tensor<1, dim> ContactOperator<dim>::contact_force(const Node &n) const
+  {
+    // Normal part from the residual; tangential part from the residual when sticking, from the
+    // friction law when slipping (so that a symmetry condition on the same node does not count).
+    double tangential = n.Rt;
+    if (n.status == ContactStatus::slip)
+      tangential
+          = dies[n.die]->friction == FrictionLaw::coulomb ? -dies[n.die]->mu * n.sign * n.Rn : 0.;
+    Tensor<1, dim> f;
+    for (unsigned int d = 0; d < dim; ++d)
+      f[d] = n.Rn * n.projection.normal[d] + tangential * n.projection.tangent[d];
+    return f;
+  }
+
+  template <int dim>
+  void ContactOperator<dim>::write_csv(const std::string &filename, const MPI_Comm comm) const
+  {
+    std::vector<std::vector<double>> rows;
+    for (const Node &n : nodes)
+      if (n.owned && n.die >= 0 && n.projection.valid)
+        rows.push_back({double(n.die),
+                        n.projection.s,
+                        n.X[0],
+                        n.X[1],
+                        n.x[0],
+                        n.x[1],
+                        n.projection.gap,
+                        n.area > 0. ? n.Rn / n.area : 0.,
+                        n.area > 0. ? (contact_force(n) * n.projection.tangent) / n.area : 0.,
+                        n.Rn,
+                        contact_force(n) * n.projection.tangent,
+                        double(static_cast<int>(n.status))});
+    const auto gathered = Utilities::MPI::gather(comm, rows, 0);
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::vector<std::vector<double>> all;
+    for (const auto &part : gathered)
+      all.insert(all.end(), part.begin(), part.end());
+    std::sort(all.begin(), all.end());
+    std::ofstream out(filename);
+    out << "# time = " << time
+        << "; status: 0 open, 1 stick, 2 slip; p_n, t_t in MPa, R_n, R_t in N\n"
+        << "die,s,X,Y,x,y,gap,p_n,t_t,R_n,R_t,status\n"
+        << std::setprecision(10);
+    for (const auto &row : all)
+    {
+      out << dies[static_cast<unsigned int>(row[0])]->name;
+      for (unsigned int k = 1; k < row.size(); ++k)
+        out << ',' << row[k];
+      out << '\n';
+    }
+  }
+
+  template <int dim>
+  void ContactOperator<dim>::fill_output_vectors(TrilinosWrappers::MPI::Vector &pressure_traction,
+                                                 TrilinosWrappers::MPI::Vector &status_gap) const
+  {
+    pressure_traction = 0.;
+    status_gap = 0.;
+    for (const Node &n : nodes)
+      if (n.owned && n.projection.valid)
+      {
+        if (n.area > 0.)
+        {
+          pressure_traction[n.dofs[0]] = n.status == ContactStatus::open ? 0. : n.Rn / n.area;
+          pressure_traction[n.dofs[1]] = n.status == ContactStatus::open
+                                             ? 0.
+                                             : (contact_force(n) * n.projection.tangent) / n.area;
+        }
+        status_gap[n.dofs[0]] = static_cast<int>(n.status);
+        status_gap[n.dofs[1]] = n.projection.gap;
+      }
+    pressure_traction.compress(VectorOperation::insert);
+    status_gap.compress(VectorOperation::insert);
+  }
+
+  template <int dim>
+  unsigned int ContactOperator<dim>::n_closed(const MPI_Comm comm) const
+  {
+    unsigned int count = 0;
+    for (const Node &n : nodes)
+      if (n.owned && n.status != ContactStatus::open)
+        ++count;
+    return Utilities::MPI::sum(count, comm);
+  }
+
+  template class ContactOperator<2>;
+} // namespace ausroll::contact

@@ -1,0 +1,296 @@
+#include <ausroll/contact/contact_parameters.h>
+#include <ausroll/core/exceptions.h>
+#include <ausroll/core/parse_utilities.h>
+
+#include <cmath>
+
+namespace ausroll::contact
+{
+  using namespace dealii;
+
+  void ContactParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Number of dies",
+                      "0",
+                      Patterns::Integer(0, max_dies),
+                      "Rigid dies used (subsections Die 0, Die 1, ...).");
+    prm.declare_entry(
+        "Strategy",
+        "active set",
+        Patterns::Selection("active set|load increment ratio"),
+        "active set: contact statuses are updated inside the Newton loop (semi-smooth "
+        "Newton); load increment ratio: statuses are fixed during a sub-step and each "
+        "step is scaled to the next status change (NOFEAP, Okamoto).");
+    prm.declare_entry(
+        "Maximum status changes",
+        "6",
+        Patterns::Integer(1, 100),
+        "A node may change its contact status at most this often within one load step "
+        "(guards the active set against chattering).");
+    prm.declare_entry(
+        "Ratio tolerance",
+        "1e-3",
+        Patterns::Double(0., 0.5),
+        "Load increment ratio: a step whose ratio alpha is above 1 - tolerance is accepted.");
+    for (unsigned int k = 0; k < max_dies; ++k)
+    {
+      prm.enter_subsection("Die " + std::to_string(k));
+      prm.declare_entry("Name",
+                        "die" + std::to_string(k),
+                        Patterns::Anything(),
+                        "Label in history.csv (die_<Name>_force_x, ...).");
+      prm.declare_entry("Shape",
+                        "flat",
+                        Patterns::Selection("flat|circle|polyline|arc line|involute gear"),
+                        "Die surface (described in die coordinates; the Motion places it).");
+      prm.declare_entry(
+          "Friction",
+          "Coulomb",
+          Patterns::Selection("frictionless|Coulomb|sticking"),
+          "Friction law: frictionless, Coulomb (Friction coefficient) or sticking (no slip).");
+      prm.declare_entry(
+          "Friction coefficient", "0", Patterns::Double(0.), "Coulomb coefficient mu.");
+      prm.declare_entry(
+          "Candidate boundaries",
+          "",
+          Patterns::List(Patterns::Integer(0, 255)),
+          "Workpiece boundary ids whose nodes may touch this die (empty: all boundaries).");
+      prm.declare_entry(
+          "Search distance",
+          "0",
+          Patterns::Double(0.),
+          "Nodes farther than this from the die are not projected (mm; 0: no limit).");
+      prm.declare_entry("Point", "0, 0", Patterns::Anything(), "flat: a point of the die surface.");
+      prm.declare_entry("Normal",
+                        "0, 1",
+                        Patterns::Anything(),
+                        "flat: surface normal pointing out of the die, towards the workpiece.");
+      prm.declare_entry("Center", "0, 0", Patterns::Anything(), "circle: centre.");
+      prm.declare_entry("Radius", "1", Patterns::Double(0.), "circle: radius (mm).");
+      prm.declare_entry(
+          "Material inside",
+          "true",
+          Patterns::Bool(),
+          "circle: true for a roll or punch (die material inside), false for a hole.");
+      prm.declare_entry(
+          "Points",
+          "",
+          Patterns::Anything(),
+          "polyline / arc line: 'x, y; x, y; ...' in travel order; the die material is "
+          "on the right of the direction of travel.");
+      prm.declare_entry("Points file",
+                        "",
+                        Patterns::Anything(),
+                        "polyline / arc line: text file with two columns x y ('#' comments), "
+                        "relative to the .prm file; used when Points is empty.");
+      prm.declare_entry("Fillet radii",
+                        "",
+                        Patterns::Anything(),
+                        "arc line: radius of the tangent arc at each interior corner (one value "
+                        "for all, or one per corner).");
+      prm.declare_entry("Number of teeth", "57", Patterns::Integer(3), "involute gear: teeth z.");
+      prm.declare_entry("Diametral pitch",
+                        "8.5",
+                        Patterns::Double(0.),
+                        "involute gear: teeth per inch of pitch diameter (0: use Module).");
+      prm.declare_entry("Module",
+                        "0",
+                        Patterns::Double(0.),
+                        "involute gear: module m (mm), used when Diametral pitch = 0.");
+      prm.declare_entry("Pressure angle",
+                        "22",
+                        Patterns::Double(0., 45.),
+                        "involute gear: pressure angle (degrees).");
+      prm.declare_entry("Addendum",
+                        "-1",
+                        Patterns::Double(),
+                        "involute gear: addendum (mm); negative: 1 module.");
+      prm.declare_entry("Dedendum",
+                        "-1",
+                        Patterns::Double(),
+                        "involute gear: dedendum (mm); negative: 1.25 module.");
+      prm.declare_entry("Tooth thickness",
+                        "-1",
+                        Patterns::Double(),
+                        "involute gear: tooth thickness at the pitch circle (mm); negative: half "
+                        "the circular pitch.");
+      prm.declare_entry("Root fillet radius",
+                        "0",
+                        Patterns::Double(0.),
+                        "involute gear: root fillet radius (mm).");
+      prm.declare_entry("Tooth axis angle",
+                        "0",
+                        Patterns::Double(),
+                        "involute gear: direction of the axis of tooth 0 (degrees from +x).");
+      prm.declare_entry(
+          "Teeth in sector",
+          "0",
+          Patterns::Integer(0),
+          "involute gear: build only this many teeth around tooth 0 (0: whole gear).");
+
+      prm.enter_subsection("Motion");
+      prm.declare_entry("Type",
+                        "fixed",
+                        Patterns::Selection("fixed|prescribed|rolling"),
+                        "fixed; prescribed (Translation, Rotation about Pivot); rolling (planetary "
+                        "motion about the workpiece centre, NOFEAP section 4.1).");
+      prm.declare_entry("Translation",
+                        "0; 0",
+                        Patterns::Anything(),
+                        "prescribed: displacement of the pivot 'ux(t); uy(t)' (mm).");
+      prm.declare_entry(
+          "Rotation",
+          "0",
+          Patterns::Anything(),
+          "prescribed: rotation angle phi(t) about the pivot (degrees, counter-clockwise).");
+      prm.declare_entry(
+          "Pivot", "0, 0", Patterns::Anything(), "prescribed: rotation centre in die coordinates.");
+      prm.declare_entry("Workpiece center",
+                        "0, 0",
+                        Patterns::Anything(),
+                        "rolling: centre O_G of the (non-rotating) workpiece.");
+      prm.declare_entry("Workpiece rolling radius",
+                        "1",
+                        Patterns::Double(0.),
+                        "rolling: R_G, radius of pure rolling on the workpiece (pitch radius).");
+      prm.declare_entry("Die rolling radius",
+                        "1",
+                        Patterns::Double(0.),
+                        "rolling: R_D, radius of pure rolling on the die; the die spins by theta_D "
+                        "= (R_G/R_D) theta_G.");
+      prm.declare_entry("Initial center distance",
+                        "0",
+                        Patterns::Double(0.),
+                        "rolling: distance O_G to die centre at t = 0 (0: R_G + R_D).");
+      prm.declare_entry("Initial line angle",
+                        "90",
+                        Patterns::Double(),
+                        "rolling: angle of the line of centres at t = 0 (degrees from +x).");
+      prm.declare_entry("Direction",
+                        "1",
+                        Patterns::Integer(-1, 1),
+                        "rolling: +1 the die revolves counter-clockwise, -1 clockwise.");
+      prm.declare_entry(
+          "Rolling factor",
+          "1",
+          Patterns::Double(0., 1.),
+          "rolling: beta in theta_D = (R_G/R_D) theta_G + (1 - beta) theta_s (1: pure rolling).");
+      prm.declare_entry("Revolution angle",
+                        "0",
+                        Patterns::Anything(),
+                        "rolling: theta_G(t), revolution of the die centre about O_G (degrees).");
+      prm.declare_entry("Slip angle", "0", Patterns::Anything(), "rolling: theta_s(t) (degrees).");
+      prm.declare_entry("Feed",
+                        "0",
+                        Patterns::Anything(),
+                        "rolling: radial feed f(t) of the die towards O_G (mm).");
+      prm.leave_subsection();
+      prm.leave_subsection();
+    }
+    prm.leave_subsection();
+  }
+
+  void ContactParameters::parse_parameters(ParameterHandler  &prm,
+                                           const std::string &input_directory)
+  {
+    prm.enter_subsection("Contact");
+    const unsigned int n_dies = prm.get_integer("Number of dies");
+    strategy = prm.get("Strategy") == "active set" ? ContactStrategy::active_set
+                                                   : ContactStrategy::load_increment_ratio;
+    max_status_changes = prm.get_integer("Maximum status changes");
+    ratio_tolerance = prm.get_double("Ratio tolerance");
+    dies.clear();
+    for (unsigned int k = 0; k < n_dies; ++k)
+    {
+      const std::string path = "Contact/Die " + std::to_string(k) + "/";
+      prm.enter_subsection("Die " + std::to_string(k));
+      DieParameters d;
+      d.name = prm.get("Name");
+      require(!d.name.empty() && d.name.find_first_of(" ,;") == std::string::npos,
+              path + "Name",
+              "must be a single word");
+      const std::string shape = prm.get("Shape");
+      d.shape = shape == "flat"       ? DieShape::flat
+                : shape == "circle"   ? DieShape::circle
+                : shape == "polyline" ? DieShape::polyline
+                : shape == "arc line" ? DieShape::arc_line
+                                      : DieShape::involute_gear;
+      const std::string friction = prm.get("Friction");
+      d.friction = friction == "frictionless" ? FrictionLaw::frictionless
+                   : friction == "Coulomb"    ? FrictionLaw::coulomb
+                                              : FrictionLaw::sticking;
+      d.friction_coefficient = prm.get_double("Friction coefficient");
+      if (d.friction == FrictionLaw::coulomb && d.friction_coefficient == 0.)
+        d.friction = FrictionLaw::frictionless;
+      d.candidate_boundaries
+          = parse_unsigned_list(prm.get("Candidate boundaries"), path + "Candidate boundaries");
+      d.search_distance = prm.get_double("Search distance");
+      d.point = parse_point<2>(prm.get("Point"), path + "Point");
+      d.normal = parse_point<2>(prm.get("Normal"), path + "Normal");
+      d.center = parse_point<2>(prm.get("Center"), path + "Center");
+      d.radius = prm.get_double("Radius");
+      d.material_inside = prm.get_bool("Material inside");
+      d.points = prm.get("Points");
+      d.points_file = prm.get("Points file");
+      if (!d.points_file.empty() && d.points_file[0] != '/')
+        d.points_file = input_directory + d.points_file;
+      d.fillet_radii = parse_double_list(prm.get("Fillet radii"), path + "Fillet radii");
+      d.teeth = prm.get_integer("Number of teeth");
+      d.diametral_pitch = prm.get_double("Diametral pitch");
+      d.module = prm.get_double("Module");
+      d.pressure_angle = prm.get_double("Pressure angle");
+      d.addendum = prm.get_double("Addendum");
+      d.dedendum = prm.get_double("Dedendum");
+      d.tooth_thickness = prm.get_double("Tooth thickness");
+      d.fillet_radius = prm.get_double("Root fillet radius");
+      d.tooth_axis_angle = prm.get_double("Tooth axis angle");
+      d.sector_teeth = prm.get_integer("Teeth in sector");
+
+      prm.enter_subsection("Motion");
+      const std::string motion = prm.get("Type");
+      d.motion = motion == "fixed"        ? MotionType::fixed
+                 : motion == "prescribed" ? MotionType::prescribed
+                                          : MotionType::rolling;
+      d.translation = prm.get("Translation");
+      d.rotation = prm.get("Rotation");
+      d.pivot = parse_point<2>(prm.get("Pivot"), path + "Motion/Pivot");
+      d.workpiece_center
+          = parse_point<2>(prm.get("Workpiece center"), path + "Motion/Workpiece center");
+      d.workpiece_radius = prm.get_double("Workpiece rolling radius");
+      d.die_radius = prm.get_double("Die rolling radius");
+      d.center_distance = prm.get_double("Initial center distance");
+      d.line_angle = prm.get_double("Initial line angle");
+      d.direction = prm.get_integer("Direction");
+      d.beta = prm.get_double("Rolling factor");
+      d.revolution = prm.get("Revolution angle");
+      d.slip = prm.get("Slip angle");
+      d.feed = prm.get("Feed");
+      prm.leave_subsection();
+      prm.leave_subsection();
+
+      // Semantic checks.
+      if (d.shape == DieShape::flat)
+        require(d.normal.norm() > 0., path + "Normal", "must not be the zero vector");
+      if (d.shape == DieShape::circle)
+        require(d.radius > 0., path + "Radius", "must be positive");
+      if (d.shape == DieShape::polyline || d.shape == DieShape::arc_line)
+        require(!d.points.empty() || !d.points_file.empty(),
+                path + "Points",
+                "give the die outline in Points or Points file");
+      if (d.shape == DieShape::involute_gear)
+        require(d.diametral_pitch > 0. || d.module > 0.,
+                path + "Module",
+                "set Diametral pitch or Module");
+      if (d.motion == MotionType::rolling)
+      {
+        require(
+            d.workpiece_radius > 0., path + "Motion/Workpiece rolling radius", "must be positive");
+        require(d.die_radius > 0., path + "Motion/Die rolling radius", "must be positive");
+        require(d.direction != 0, path + "Motion/Direction", "must be +1 or -1");
+      }
+      dies.push_back(d);
+    }
+    prm.leave_subsection();
+  }
+} // namespace ausroll::contact
