@@ -27,22 +27,21 @@ namespace ausroll::material
     return s;
   }
 
+  SymmetricTensor<2, 3> spectral_sum(const SpectralDecomposition &s, const std::array<double, 3> &f)
+  {
+    SymmetricTensor<2, 3> Y;
+    for (unsigned int a = 0; a < 3; ++a)
+    {
+      const Tensor<1, 3> &n = s.vectors[a];
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = i; j < 3; ++j)
+          Y[i][j] += f[a] * n[i] * n[j];
+    }
+    return Y;
+  }
+
   namespace
   {
-    /** sum_a f_a n_a (x) n_a. */
-    SymmetricTensor<2, 3> compose(const SpectralDecomposition &s, const std::array<double, 3> &f)
-    {
-      SymmetricTensor<2, 3> Y;
-      for (unsigned int a = 0; a < 3; ++a)
-      {
-        const Tensor<1, 3> &n = s.vectors[a];
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = i; j < 3; ++j)
-            Y[i][j] += f[a] * n[i] * n[j];
-      }
-      return Y;
-    }
-
     /**
      * The derivative of the isotropic function Y = sum_a f(x_a) n_a (x) n_a:
      * dY/dX = sum_{a,b} theta_ab N_ab (x) N_ab with N_ab = sym(n_a (x) n_b), theta_aa = f'(x_a)
@@ -60,7 +59,7 @@ namespace ausroll::material
             for (unsigned int j = i; j < 3; ++j)
               N[i][j]
                   = 0.5 * (s.vectors[a][i] * s.vectors[b][j] + s.vectors[b][i] * s.vectors[a][j]);
-          D += ((a == b ? 1. : 2.) * theta[a][b]) * dealii::outer_product(N, N);
+          add_outer_product(D, (a == b ? 1. : 2.) * theta[a][b], N, N);
         }
       return D;
     }
@@ -84,8 +83,12 @@ namespace ausroll::material
 
   SymmetricTensor<2, 3> logarithm(const SymmetricTensor<2, 3> &X, SymmetricTensor<4, 3> *derivative)
   {
-    const SpectralDecomposition s = spectral_decomposition(X);
-    std::array<double, 3>       f;
+    return logarithm(spectral_decomposition(X), derivative);
+  }
+
+  SymmetricTensor<2, 3> logarithm(const SpectralDecomposition &s, SymmetricTensor<4, 3> *derivative)
+  {
+    std::array<double, 3> f;
     for (unsigned int a = 0; a < 3; ++a)
     {
       if (!(s.values[a] > 0.))
@@ -110,7 +113,7 @@ namespace ausroll::material
         }
       *derivative = spectral_derivative(s, theta);
     }
-    return compose(s, f);
+    return spectral_sum(s, f);
   }
 
   SymmetricTensor<2, 3> exponential(const SymmetricTensor<2, 3> &X,
@@ -129,7 +132,7 @@ namespace ausroll::material
           theta[a][b] = theta[b][a] = f[b] * expm1_over(s.shifted_values[a] - s.shifted_values[b]);
       *derivative = spectral_derivative(s, theta);
     }
-    return compose(s, f);
+    return spectral_sum(s, f);
   }
 
   void polar_decomposition(const Tensor<2, 3> &F, Tensor<2, 3> &R, SymmetricTensor<2, 3> &U)
@@ -144,7 +147,7 @@ namespace ausroll::material
       u[a] = std::sqrt(s.values[a]);
       u_inv[a] = 1. / u[a];
     }
-    U = compose(s, u);
-    R = F * Tensor<2, 3>(compose(s, u_inv));
+    U = spectral_sum(s, u);
+    R = F * Tensor<2, 3>(spectral_sum(s, u_inv));
   }
 } // namespace ausroll::material

@@ -225,6 +225,22 @@ TEST(TensorFunctions, LogarithmAndExponentialDerivativesMatchFiniteDifferences)
   EXPECT_LT((dlog_I - dealii::identity_tensor<3>()).norm(), 1e-14);
 }
 
+TEST(TensorFunctions, AddOuterProductEqualsDealIIOuterProduct)
+{
+  SymmetricTensor<2, 3> A, B;
+  for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int j = i; j < 3; ++j)
+    {
+      A[i][j] = 1. + i + 3. * j;
+      B[i][j] = 0.5 - 2. * i + j * j;
+    }
+  SymmetricTensor<4, 3> D = dealii::identity_tensor<3>();
+  add_outer_product(D, 0.7, A, B);
+  const SymmetricTensor<4, 3> expected
+      = dealii::identity_tensor<3>() + 0.7 * dealii::outer_product(A, B);
+  EXPECT_LT((D - expected).norm(), 1e-14 * expected.norm());
+}
+
 TEST(TensorFunctions, PolarDecomposition)
 {
   const Tensor<2, 3>    F = rotated_stretch(60., stretch(1.3, 0.8, 1.1, 0.25));

@@ -30,6 +30,10 @@ namespace ausroll::material
   /** Spectral decomposition of @p X (deal.II's QL algorithm with implicit shifts). */
   SpectralDecomposition spectral_decomposition(const dealii::SymmetricTensor<2, 3> &X);
 
+  /** sum_a f_a n_a (x) n_a for the eigenvectors n_a of @p s (an isotropic function's value). */
+  dealii::SymmetricTensor<2, 3> spectral_sum(const SpectralDecomposition &s,
+                                             const std::array<double, 3> &f);
+
   /**
    * The matrix logarithm ln X of a symmetric positive definite @p X; if @p derivative is not null,
    * also d ln X / d X (minor- and major-symmetric; ln(X + dX) = ln X + derivative : dX for
@@ -38,6 +42,10 @@ namespace ausroll::material
    * Throws RunFailure if X is not positive definite.
    */
   dealii::SymmetricTensor<2, 3> logarithm(const dealii::SymmetricTensor<2, 3> &X,
+                                          dealii::SymmetricTensor<4, 3> *derivative = nullptr);
+
+  /** As logarithm(X, derivative), for the already computed decomposition @p s of X. */
+  dealii::SymmetricTensor<2, 3> logarithm(const SpectralDecomposition   &s,
                                           dealii::SymmetricTensor<4, 3> *derivative = nullptr);
 
   /**
@@ -54,6 +62,24 @@ namespace ausroll::material
   void polar_decomposition(const dealii::Tensor<2, 3>    &F,
                            dealii::Tensor<2, 3>          &R,
                            dealii::SymmetricTensor<2, 3> &U);
+
+  /**
+   * D += w A (x) B on the 6 x 6 independent entries (the same as
+   * D += w * dealii::outer_product(A, B), without the temporary and the index mapping of
+   * SymmetricTensor<4>::operator[]; used in the hot path of the material models).
+   */
+  inline void add_outer_product(dealii::SymmetricTensor<4, 3>       &D,
+                                const double                         w,
+                                const dealii::SymmetricTensor<2, 3> &A,
+                                const dealii::SymmetricTensor<2, 3> &B)
+  {
+    for (unsigned int p = 0; p < 6; ++p)
+    {
+      const double wa = w * A.access_raw_entry(p);
+      for (unsigned int q = 0; q < 6; ++q)
+        D.access_raw_entry(6 * p + q) += wa * B.access_raw_entry(q);
+    }
+  }
 
   /** The axial vector w of the skew part of @p W: skew(W) v = w x v. */
   inline dealii::Tensor<1, 3> axial_vector(const dealii::Tensor<2, 3> &W)
