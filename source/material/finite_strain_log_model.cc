@@ -1,6 +1,8 @@
 #include <ausroll/material/finite_strain_log_model.h>
 #include <ausroll/material/tensor_functions.h>
 
+#include <cmath>
+
 namespace ausroll::material
 {
   using dealii::SymmetricTensor;
@@ -22,9 +24,10 @@ namespace ausroll::material
     // elastic trial state: b_e^trial = F C_p,n^-1 F^T, C_p,n^-1 = F_n^-1 b_e,n F_n^-T
     const SymmetricTensor<2, 3> Cp_inv = rotate(F_n_inv, old.elastic_left_cauchy_green);
     const SymmetricTensor<2, 3> b_trial = rotate(F, Cp_inv);
+    const SpectralDecomposition spectral = spectral_decomposition(b_trial);
     SymmetricTensor<4, 3>       dlog_db;
     const SymmetricTensor<2, 3> eps_trial
-        = 0.5 * logarithm(b_trial, tangent != nullptr ? &dlog_db : nullptr);
+        = 0.5 * logarithm(spectral, tangent != nullptr ? &dlog_db : nullptr);
     const SymmetricTensor<2, 3> tau_trial = stress_return->elasticity().stress(eps_trial);
 
     // back stress carried along with the rotation of the increment f = F F_n^-1 = dR dU
@@ -87,15 +90,11 @@ namespace ausroll::material
     for (unsigned int k = 0; k < 3; ++k)
       for (unsigned int L = 0; L < 3; ++L)
       {
-        SymmetricTensor<2, 3> d_tau;
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = i; j < 3; ++j)
-          {
-            double s = 0.;
-            for (unsigned int n = 0; n < 3; ++n)
-              s += K[i][j][k][n] * FG[n][L];
-            d_tau[i][j] = s;
-          }
+        // sym(e_k (x) c) with c = column L of F C_p,n^-1
+        SymmetricTensor<2, 3> direction;
+        for (unsigned int n = 0; n < 3; ++n)
+          direction[k][n] = (n == k ? 1. : 0.5) * FG[n][L];
+        SymmetricTensor<2, 3> d_tau = K * direction;
 
         if (rotate_back_stress)
         {
