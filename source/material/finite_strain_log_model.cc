@@ -75,15 +75,20 @@ namespace ausroll::material
     const SymmetricTensor<4, 3> K = r.tangent * dlog_db;
     const Tensor<2, 3>          FG = F * Tensor<2, 3>(Cp_inv);
 
-    // back-stress rotation: dR = dR Omega with (tr dU I - dU) omega = axial(dR^T df - df^T dR)
-    Tensor<2, 3>          Z;
+    // Back-stress rotation: d(dR) = dR Omega with (tr dU I - dU) omega = axial(dR^T df - df^T dR)
+    // (polar decomposition f = dR dU). With df = e_k (x) g_L (g_L = row L of F_n^-1) the right side
+    // is g_L x r_k (r_k = row k of dR), and d beta^trial = W beta^trial - beta^trial W with the
+    // spatial spin W = dR Omega dR^T, whose axial vector is dR omega.
+    Tensor<2, 3>          spin_map; // dR (tr dU I - dU)^-1
+    Tensor<2, 3>          back_trial_full;
     SymmetricTensor<4, 3> back_sensitivity;
     if (rotate_back_stress)
     {
       Tensor<2, 3> trU_minus_U = -Tensor<2, 3>(dU);
       for (unsigned int i = 0; i < 3; ++i)
         trU_minus_U[i][i] += dealii::trace(dU);
-      Z = dealii::invert(trU_minus_U);
+      spin_map = dR * dealii::invert(trU_minus_U);
+      back_trial_full = back_trial;
       back_sensitivity = stress_return->back_stress_sensitivity(r);
     }
 
@@ -98,15 +103,13 @@ namespace ausroll::material
 
         if (rotate_back_stress)
         {
-          // df = e_k (x) (row L of F_n^-1); dR^T df has entries dR_ki F_n^-1_Lj
-          Tensor<2, 3> Rt_df;
+          const Tensor<1, 3>    omega = spin_map * dealii::cross_product_3d(F_n_inv[L], dR[k]);
+          const Tensor<2, 3>    W_beta = skew_from_axial(omega) * back_trial_full;
+          SymmetricTensor<2, 3> d_back;
           for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              Rt_df[i][j] = dR[k][i] * F_n_inv[L][j];
-          const Tensor<1, 3> omega = Z * (2. * axial_vector(Rt_df));
-          const Tensor<2, 3> Omega_beta = skew_from_axial(omega) * Tensor<2, 3>(old.back_stress);
-          // d beta^trial = dR (Omega beta - beta Omega) dR^T
-          d_tau += back_sensitivity * rotate(dR, dealii::symmetrize(2. * Omega_beta));
+            for (unsigned int j = i; j < 3; ++j)
+              d_back[i][j] = W_beta[i][j] + W_beta[j][i];
+          d_tau += back_sensitivity * d_back;
         }
 
         // dP = d tau F^-T - tau F^-T dF^T F^-T
