@@ -23,6 +23,11 @@ namespace ausroll::material
    *   b_e = exp(2 eps_e) (exponential map: plastically volume preserving);
    * - sigma = tau / J, P = tau F^-T.
    *
+   * The yield function is evaluated with the Kirchhoff stress tau (as usual for this model), so in
+   * uniaxial tension tau = sigma_y(alpha) and the true (Cauchy) stress is sigma_y(alpha) / J_e with
+   * the elastic volume ratio J_e = det F = exp((1 - 2 nu) tau / E) (a 0.1-0.2 % difference for
+   * steels).
+   *
    * Tangent: exact, by the chain rule. d tau = D : (d ln b / d b) : d b^trial / 2
    * (+ the back-stress rotation term), where d ln b / d b comes from the spectral decomposition
    * with divided differences (see logarithm()), d b^trial = dF C_p,n^-1 F^T + F C_p,n^-1 dF^T;

@@ -23,6 +23,10 @@ namespace ausroll::material
    *   mapping of the PlasticityModel;
    * - P = J sigma F^-T.
    *
+   * Accuracy: the rotation of sigma_n is second order, but the strain increment C : Delta eps is
+   * added unrotated, so the coupling of spin and stretching ([W, D]) is integrated to first order
+   * only (elastic simple shear: error about mu Delta gamma in the stresses, see the unit test).
+   *
    * Tangent: the exact derivative dP/dF of this discrete update, computed analytically column by
    * column (one direction dF = e_k (x) e_L at a time): d Delta L = (I - Delta L / 2) dF F_mid^-1,
    * dQ = M dW (Q + I) / 2 with M = (I - Delta W / 2)^-1, the return-mapping tangents w.r.t. the
