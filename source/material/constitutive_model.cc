@@ -1,7 +1,10 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/material/constitutive_model.h>
+#include <ausroll/material/finite_strain_log_model.h>
 #include <ausroll/material/plane_stress_driver.h>
 #include <ausroll/material/small_strain_model.h>
+#include <ausroll/material/total_lagrangian_model.h>
+#include <ausroll/material/updated_lagrangian_jaumann_model.h>
 
 namespace ausroll::material
 {
@@ -44,10 +47,18 @@ namespace ausroll::material
       case KinematicsType::small_strain:
         model = std::make_unique<SmallStrainModel>(create_plasticity_model(material));
         break;
-      default:
-        throw InputError("Model/Kinematics: '" + to_string(kinematics)
-                         + "' is not available in this build yet");
+      case KinematicsType::total_lagrangian:
+        model = std::make_unique<TotalLagrangianModel>(create_plasticity_model(material));
+        break;
+      case KinematicsType::updated_lagrangian:
+        model = std::make_unique<UpdatedLagrangianJaumannModel>(create_plasticity_model(material));
+        break;
+      case KinematicsType::finite_strain:
+        model = std::make_unique<FiniteStrainLogModel>(create_plasticity_model(material));
+        break;
     }
+    if (!model)
+      throw InputError("Model/Kinematics: unknown kinematics");
     if (plane_stress)
       model = std::make_unique<PlaneStressDriver>(std::move(model));
     return model;

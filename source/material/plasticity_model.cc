@@ -1,5 +1,6 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/material/plasticity_model.h>
+#include <ausroll/material/tensor_functions.h>
 
 #include <cmath>
 #include <sstream>
@@ -65,8 +66,11 @@ namespace ausroll::material
       if (f_trial > -1e-10 * sigma_y0 && norm_eta > 0.)
       {
         const SymmetricTensor<2, 3> N = eta_trial / norm_eta;
-        result.tangent -= 6. * mu * mu / (3. * mu + kinematic_modulus + hardening.slope(alpha_old))
-                          * dealii::outer_product(N, N);
+        add_outer_product(result.tangent,
+                          -6. * mu * mu
+                              / (3. * mu + kinematic_modulus + hardening.slope(alpha_old)),
+                          N,
+                          N);
       }
       return result;
     }
@@ -105,8 +109,8 @@ namespace ausroll::material
         = back_stress_old + (2. / 3.) * kinematic_modulus * result.plastic_strain_increment;
 
     const double ratio = dgamma / q_trial;
-    result.tangent = stiffness - 6. * mu * mu * ratio * dealii::deviator_tensor<3>()
-                     + 6. * mu * mu * (ratio - 1. / h_total) * dealii::outer_product(N, N);
+    result.tangent = stiffness - 6. * mu * mu * ratio * dealii::deviator_tensor<3>();
+    add_outer_product(result.tangent, 6. * mu * mu * (ratio - 1. / h_total), N, N);
     return result;
   }
 

@@ -32,6 +32,17 @@ namespace ausroll::material
              + 2. * shear_modulus * strain;
     }
 
+    /** eps = C^-1 : sigma (the inverse of stress()). */
+    dealii::SymmetricTensor<2, 3> strain(const dealii::SymmetricTensor<2, 3> &stress) const
+    {
+      const double                  mean = dealii::trace(stress) / 3.;
+      dealii::SymmetricTensor<2, 3> eps = (0.5 / shear_modulus) * stress;
+      const double volumetric = mean / (3. * bulk_modulus) - mean / (2. * shear_modulus);
+      for (unsigned int i = 0; i < 3; ++i)
+        eps[i][i] += volumetric;
+      return eps;
+    }
+
     /** The elasticity tensor C = 3 kappa I_vol + 2 mu I_dev. */
     dealii::SymmetricTensor<4, 3> stiffness() const
     {

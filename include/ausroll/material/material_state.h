@@ -17,12 +17,18 @@ namespace ausroll::material
    *
    * - @ref stress: Cauchy stress sigma (all models keep it current, for output and for the
    *   rate form of the updated Lagrangian model).
-   * - @ref plastic_strain: plastic strain (small strain: eps_p; total Lagrangian: plastic
-   *   Green-Lagrange strain; finite strain: logarithmic plastic strain, for output).
-   * - @ref back_stress: back stress of linear kinematic hardening (deviatoric).
-   * - @ref elastic_left_cauchy_green: b_e = F_e F_e^T of the multiplicative finite-strain model.
+   * - @ref plastic_strain: plastic strain of the model (small strain: eps_p; total Lagrangian:
+   *   plastic Green-Lagrange strain E_p; both are state variables. Output only: updated
+   *   Lagrangian: increments accumulated with the Hughes-Winget rotation; finite strain:
+   *   Lagrangian logarithmic plastic strain ln(C_p) / 2 with C_p = F^T b_e^-1 F).
+   * - @ref back_stress: back stress of linear kinematic hardening (deviatoric), in the stress space
+   *   of the return mapping (small strain and updated Lagrangian: Cauchy; total Lagrangian: 2nd
+   *   Piola-Kirchhoff, reference configuration; finite strain: Kirchhoff, current configuration).
+   * - @ref elastic_left_cauchy_green: b_e = F_e F_e^T of the multiplicative finite-strain model
+   *   (the other models leave it at I).
    * - @ref deformation_gradient: F at this state (3x3; the out-of-plane stretch of plane stress,
-   *   the hoop stretch of axisymmetric models).
+   *   the hoop stretch of axisymmetric models); F_n of the next step for the updated Lagrangian
+   *   and finite strain models.
    * - @ref equivalent_plastic_strain: accumulated equivalent plastic strain alpha.
    */
   struct MaterialState

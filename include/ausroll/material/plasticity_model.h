@@ -56,6 +56,19 @@ namespace ausroll::material
                                   const dealii::SymmetricTensor<2, 3> &back_stress,
                                   const double                         alpha) const = 0;
 
+    /**
+     * Sensitivity of the returned stress to the trial back stress, d stress / d back_stress_old,
+     * for a deviatoric perturbation of the back stress, from the algorithmic tangent D of @p
+     * result: (C - D) / (2 mu). Valid for return maps whose correction depends on the trial state
+     * only through dev(trial_stress) - back_stress_old and is deviatoric (NoPlasticity,
+     * VonMisesPlasticity). The finite-strain models need it because they rotate the back stress
+     * with the deformation before the return.
+     */
+    dealii::SymmetricTensor<4, 3> back_stress_sensitivity(const ReturnMappingResult &result) const
+    {
+      return (stiffness - result.tangent) / (2. * elastic.shear_modulus);
+    }
+
     /** The elastic law. */
     const IsotropicElasticity &elasticity() const { return elastic; }
 

@@ -1,0 +1,126 @@
+#include <ausroll/material/finite_strain_log_model.h>
+#include <ausroll/material/tensor_functions.h>
+
+#include <cmath>
+
+namespace ausroll::material
+{
+  using dealii::SymmetricTensor;
+  using dealii::Tensor;
+
+  FiniteStrainLogModel::FiniteStrainLogModel(std::unique_ptr<PlasticityModel> plasticity)
+      : stress_return(std::move(plasticity))
+  {
+  }
+
+  void FiniteStrainLogModel::evaluate(const Tensor<2, 3>  &F,
+                                      const MaterialState &old,
+                                      MaterialState       &state,
+                                      Tensor<2, 3>        &P,
+                                      Tensor<4, 3>        *tangent) const
+  {
+    const Tensor<2, 3> F_n_inv = dealii::invert(old.deformation_gradient);
+
+    // elastic trial state: b_e^trial = F C_p,n^-1 F^T, C_p,n^-1 = F_n^-1 b_e,n F_n^-T
+    const SymmetricTensor<2, 3> Cp_inv = rotate(F_n_inv, old.elastic_left_cauchy_green);
+    const SymmetricTensor<2, 3> b_trial = rotate(F, Cp_inv);
+    const SpectralDecomposition spectral = spectral_decomposition(b_trial);
+    SymmetricTensor<4, 3>       dlog_db;
+    const SymmetricTensor<2, 3> eps_trial
+        = 0.5 * logarithm(spectral, tangent != nullptr ? &dlog_db : nullptr);
+    const SymmetricTensor<2, 3> tau_trial = stress_return->elasticity().stress(eps_trial);
+
+    // back stress carried along with the rotation of the increment f = F F_n^-1 = dR dU
+    const bool            rotate_back_stress = old.back_stress.norm() > 0.;
+    Tensor<2, 3>          dR;
+    SymmetricTensor<2, 3> dU;
+    SymmetricTensor<2, 3> back_trial = old.back_stress;
+    if (rotate_back_stress)
+    {
+      polar_decomposition(F * F_n_inv, dR, dU);
+      back_trial = rotate(dR, old.back_stress);
+    }
+
+    const ReturnMappingResult r
+        = stress_return->return_map(tau_trial, back_trial, old.equivalent_plastic_strain);
+    const SymmetricTensor<2, 3> &tau = r.stress;
+
+    const double       J = dealii::determinant(F);
+    const Tensor<2, 3> F_inv = dealii::invert(F);
+    P = Tensor<2, 3>(tau) * dealii::transpose(F_inv);
+
+    state.stress = tau / J;
+    state.back_stress = r.back_stress;
+    state.equivalent_plastic_strain = old.equivalent_plastic_strain + r.eq_plastic_strain_increment;
+    state.deformation_gradient = F;
+    if (r.plastic)
+    {
+      // exponential map: b_e = exp(2 (eps_e^trial - Delta eps_p)); output ln(C_p) / 2
+      state.elastic_left_cauchy_green = exponential(2. * (eps_trial - r.plastic_strain_increment));
+      state.plastic_strain = 0.5
+                             * logarithm(rotate(dealii::transpose(F),
+                                                dealii::invert(state.elastic_left_cauchy_green)));
+    }
+    else
+    {
+      state.elastic_left_cauchy_green = b_trial;
+      state.plastic_strain = old.plastic_strain;
+    }
+
+    if (tangent == nullptr)
+      return;
+
+    // d tau / d b^trial = D : (d ln b / d b) / 2 =: K / 2; with d b^trial = 2 sym(dF C_p,n^-1 F^T)
+    // the direction dF = e_k (x) e_L gives d tau_ij = sum_n K_ijkn (F C_p,n^-1)_nL.
+    const SymmetricTensor<4, 3> K = r.tangent * dlog_db;
+    const Tensor<2, 3>          FG = F * Tensor<2, 3>(Cp_inv);
+
+    // Back-stress rotation: d(dR) = dR Omega with (tr dU I - dU) omega = axial(dR^T df - df^T dR)
+    // (polar decomposition f = dR dU). With df = e_k (x) g_L (g_L = row L of F_n^-1) the right side
+    // is g_L x r_k (r_k = row k of dR), and d beta^trial = W beta^trial - beta^trial W with the
+    // spatial spin W = dR Omega dR^T, whose axial vector is dR omega.
+    Tensor<2, 3>          spin_map; // dR (tr dU I - dU)^-1
+    Tensor<2, 3>          back_trial_full;
+    SymmetricTensor<4, 3> back_sensitivity;
+    if (rotate_back_stress)
+    {
+      Tensor<2, 3> trU_minus_U = -Tensor<2, 3>(dU);
+      for (unsigned int i = 0; i < 3; ++i)
+        trU_minus_U[i][i] += dealii::trace(dU);
+      spin_map = dR * dealii::invert(trU_minus_U);
+      back_trial_full = back_trial;
+      back_sensitivity = stress_return->back_stress_sensitivity(r);
+    }
+
+    for (unsigned int k = 0; k < 3; ++k)
+      for (unsigned int L = 0; L < 3; ++L)
+      {
+        // sym(e_k (x) c) with c = column L of F C_p,n^-1
+        SymmetricTensor<2, 3> direction;
+        for (unsigned int n = 0; n < 3; ++n)
+          direction[k][n] = (n == k ? 1. : 0.5) * FG[n][L];
+        SymmetricTensor<2, 3> d_tau = K * direction;
+
+        if (rotate_back_stress)
+        {
+          const Tensor<1, 3>    omega = spin_map * dealii::cross_product_3d(F_n_inv[L], dR[k]);
+          const Tensor<2, 3>    W_beta = skew_from_axial(omega) * back_trial_full;
+          SymmetricTensor<2, 3> d_back;
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = i; j < 3; ++j)
+              d_back[i][j] = W_beta[i][j] + W_beta[j][i];
+          d_tau += back_sensitivity * d_back;
+        }
+
+        // dP = d tau F^-T - tau F^-T dF^T F^-T
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int Jj = 0; Jj < 3; ++Jj)
+          {
+            double s = 0.;
+            for (unsigned int j = 0; j < 3; ++j)
+              s += d_tau[i][j] * F_inv[Jj][j];
+            (*tangent)[i][Jj][k][L] = s - P[i][L] * F_inv[Jj][k];
+          }
+      }
+  }
+} // namespace ausroll::material
