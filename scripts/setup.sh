@@ -12,6 +12,8 @@ JOBS="${AUSROLL_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 export OMPI_ALLOW_RUN_AS_ROOT=1
 export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
+# Oversubscribed ranks should yield the core instead of spinning while they wait.
+export OMPI_MCA_mpi_yield_when_idle=1
 # One thread per MPI rank (deal.II/TBB would otherwise use every core in every rank).
 export DEAL_II_NUM_THREADS="${DEAL_II_NUM_THREADS:-1}"
 

@@ -289,7 +289,9 @@ namespace ausroll::scene
   template <int dim>
   double Scene<dim>::reference_force() const
   {
-    return last_reference_force;
+    // Forces below 1e-3 of the largest force level seen in the run are round-off noise (e.g. a die
+    // just lifting off): do not ask the residual to be smaller than the run's round-off.
+    return std::max(last_reference_force, 1e-3 * largest_reference_force);
   }
 
   template <int dim>
@@ -332,6 +334,7 @@ namespace ausroll::scene
           point->commit();
     step_start = solution;
     contact.commit();
+    largest_reference_force = std::max(largest_reference_force, last_reference_force);
   }
 
   template <int dim>
@@ -586,7 +589,11 @@ namespace ausroll::scene
     const double t_end = loading.end_time;
     while (t_done < t_end * (1. - 1e-12))
     {
-      double dt_try = std::min(dt, t_end - t_done);
+      // Steps end on the grid of nominal steps (also after cutbacks and load-increment-ratio
+      // sub-steps), so that outputs and histories of different runs share their times.
+      const double next_grid
+          = std::min(t_end, nominal_dt * (std::floor(t_done / nominal_dt + 1e-9) + 1.));
+      double dt_try = std::min(dt, next_grid - t_done);
       if (t_end - (t_done + dt_try) < 1e-6 * nominal_dt)
         dt_try = t_end - t_done;
 

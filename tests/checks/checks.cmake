@@ -35,3 +35,49 @@ add_test(NAME check/bad_input
           $<TARGET_FILE:ausroll> ${AUSROLL_CHECKS_DIR}/bad_input
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties(check/bad_input PROPERTIES LABELS check TIMEOUT 600)
+
+# ---------------------------------------------------------------- contact
+foreach(_scene block_slide_ratio hertz_ratio hertz_quiet)
+  configure_file(${AUSROLL_CHECKS_DIR}/scenes/${_scene}.prm.in ${CMAKE_CURRENT_BINARY_DIR}/${_scene}.prm @ONLY)
+endforeach()
+
+# Flat die on an elastic block: uniform stress, so the die force is exact (round-off tolerance).
+ausroll_add_check(NAME contact_block_press
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/block_press.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_history.py
+  ARGS out/history.csv --value die_punch_force_y 1 -4615.384615 1e-9
+       --value die_punch_force_x 1 0 1e-9 --value die_punch_slip_nodes 1 17 0)
+
+# Coulomb friction: stick/slip zones while pressing, F_x/F_y = -mu in full slip (exact), nothing
+# left after lift-off. Same assertions for both contact strategies.
+set(_slide_asserts
+  --range die_punch_stick_nodes 1 1 16 --range die_punch_slip_nodes 1 1 16
+  --ratio die_punch_force_x die_punch_force_y 2 -0.2 1e-9
+  --value die_punch_slip_nodes 2 17 0
+  --value die_punch_force_x 3 0 1e-9 --value die_punch_force_y 3 0 1e-9
+  --value die_punch_stick_nodes 3 0 0 --value die_punch_slip_nodes 3 0 0)
+ausroll_add_check(NAME contact_block_slide
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/block_slide.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_history.py ARGS out/history.csv ${_slide_asserts})
+ausroll_add_check(NAME contact_block_slide_ratio
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/block_slide_ratio.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_history.py ARGS out/history.csv ${_slide_asserts})
+
+# Hertz: contact half-width a and peak pressure p0 within 1 % of plane-strain Hertz theory at the
+# thesis loads P = 1779.2 ... 8896 N/mm (and the load-increment-ratio sub-steps in between), from a
+# fit of the nodal pressures to the ellipse; the scene's mesh gives 0.4 % / 0.02 %. Below 1779 N/mm
+# the contact zone spans too few nodes of this mesh for 1 %.
+set(_hertz_args out --load-per-time 1779.2 --radius 254 --youngs-modulus 210000 --poissons-ratio 0.3
+    --tol 0.01 --min-load 1779.2)
+ausroll_add_check(NAME contact_hertz
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/hertz_quiet.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_hertz.py ARGS ${_hertz_args})
+ausroll_add_check(NAME contact_hertz_ratio
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/hertz_ratio.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_hertz.py ARGS ${_hertz_args})
+
+# Contact in parallel: np = 2 gives the np = 1 history (statuses, forces) to 1e-8.
+ausroll_add_parallel_check(NAME contact_block_slide_np2
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/block_slide.prm HISTORY out/history.csv)
+ausroll_add_parallel_check(NAME contact_hertz_np2
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/hertz_quiet.prm HISTORY out/history.csv)

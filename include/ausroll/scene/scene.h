@@ -137,6 +137,7 @@ namespace ausroll::scene
 
     double last_residual_norm = 0.;
     double last_reference_force = 0.;
+    double largest_reference_force = 0.; ///< largest force level of the converged steps so far
     double last_constraint_violation = 0.;
     double min_cell_diameter = 1.;
 
