@@ -587,5 +587,86 @@ namespace ausroll::contact
     return Utilities::MPI::sum(count, comm);
   }
 
+  namespace
+  {
+    constexpr unsigned int packed_node_size = 13;
+  }
+
+  template <int dim>
+  std::vector<double> ContactOperator<dim>::pack_state() const
+  {
+    std::vector<double> local;
+    for (const Node &n : nodes)
+      if (n.owned && n.c_status != ContactStatus::open)
+        local.insert(local.end(),
+                     {n.X[0],
+                      n.X[1],
+                      double(static_cast<int>(n.c_status)),
+                      double(n.c_die),
+                      n.c_stick[0],
+                      n.c_stick[1],
+                      double(n.c_sign),
+                      n.c_s,
+                      n.c_gap,
+                      n.c_gap_valid ? 1. : 0.,
+                      n.c_Rn,
+                      n.c_Rt,
+                      n.s_ref});
+    std::vector<double> all;
+    for (const auto &part : Utilities::MPI::all_gather(comm, local))
+      all.insert(all.end(), part.begin(), part.end());
+    return all;
+  }
+
+  template <int dim>
+  void ContactOperator<dim>::unpack_state(const std::vector<double> &state)
+  {
+    // Saved nodes by position (rounded to a tolerance grid).
+    const double scale = std::max(gap_tolerance * 1e3, 1e-12);
+    std::map<std::pair<long long, long long>, const double *> saved;
+    for (std::size_t k = 0; k + packed_node_size <= state.size(); k += packed_node_size)
+      saved[{std::llround(state[k] / scale), std::llround(state[k + 1] / scale)}] = &state[k];
+
+    for (Node &n : nodes)
+    {
+      const auto it = saved.find({std::llround(n.X[0] / scale), std::llround(n.X[1] / scale)});
+      if (it == saved.end())
+        continue;
+      const double *d = it->second;
+      n.c_status = static_cast<ContactStatus>(static_cast<int>(d[2]));
+      n.c_die = static_cast<int>(d[3]);
+      n.c_stick = Point<2>(d[4], d[5]);
+      n.c_sign = static_cast<int>(d[6]);
+      n.c_s = d[7];
+      n.c_gap = d[8];
+      n.c_gap_valid = d[9] != 0.;
+      n.c_Rn = d[10];
+      n.c_Rt = d[11];
+      n.s_ref = d[12];
+      n.status = n.c_status;
+      n.die = n.c_die;
+      n.stick = n.c_stick;
+      n.sign = n.c_sign;
+      n.Rn = n.c_Rn;
+      n.Rt = n.c_Rt;
+      n.changes = 0;
+    }
+    build_row_transforms();
+  }
+
+  template <int dim>
+  double ContactOperator<dim>::distance_to_dies(const Point<dim> &x, const double t) const
+  {
+    double distance = infinity;
+    for (const auto &die : dies)
+    {
+      // no search-distance limit here: adaptivity looks at the whole workpiece
+      const Projection p = die->die_surface().project(die->pose(t).to_local(to_2d(x)));
+      if (p.valid)
+        distance = std::min(distance, std::abs(p.gap));
+    }
+    return distance;
+  }
+
   template class ContactOperator<2>;
 } // namespace ausroll::contact

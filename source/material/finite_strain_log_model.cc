@@ -123,4 +123,19 @@ namespace ausroll::material
           }
       }
   }
+
+  double FiniteStrainLogModel::yield_function(const MaterialState &state) const
+  {
+    const double J = dealii::determinant(state.deformation_gradient);
+    return stress_return->yield_function(
+        J * state.stress, state.back_stress, state.equivalent_plastic_strain);
+  }
+
+  void FiniteStrainLogModel::make_admissible(MaterialState &state) const
+  {
+    const double J = dealii::determinant(state.deformation_gradient);
+    state.stress = stress_return->project_onto_yield_surface(
+                       J * state.stress, state.back_stress, state.equivalent_plastic_strain)
+                   / J;
+  }
 } // namespace ausroll::material

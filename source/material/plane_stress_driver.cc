@@ -50,4 +50,12 @@ namespace ausroll::material
               (*tangent)[i][j][k][l] = A[i][j][k][l] - A[i][j][2][2] * A[2][2][k][l] / a_zz;
     }
   }
+
+  void PlaneStressDriver::rebase(MaterialState &state, const Tensor<2, 3> &F_in_plane) const
+  {
+    Tensor<2, 3> F = F_in_plane;
+    F[0][2] = F[2][0] = F[1][2] = F[2][1] = 0.;
+    F[2][2] = state.deformation_gradient[2][2];
+    inner->rebase(state, F);
+  }
 } // namespace ausroll::material

@@ -41,6 +41,19 @@ namespace ausroll::material
     return std::sqrt(1.5 * (eta * eta)) - hardening.yield_stress(alpha);
   }
 
+  SymmetricTensor<2, 3>
+  VonMisesPlasticity::project_onto_yield_surface(const SymmetricTensor<2, 3> &stress,
+                                                 const SymmetricTensor<2, 3> &back_stress,
+                                                 const double                 alpha) const
+  {
+    const SymmetricTensor<2, 3> eta = dealii::deviator(stress) - back_stress;
+    const double                q = std::sqrt(1.5 * (eta * eta));
+    const double                sy = hardening.yield_stress(alpha);
+    if (q <= sy)
+      return stress;
+    return stress - (1. - sy / q) * eta;
+  }
+
   ReturnMappingResult VonMisesPlasticity::return_map(const SymmetricTensor<2, 3> &trial_stress,
                                                      const SymmetricTensor<2, 3> &back_stress_old,
                                                      const double                 alpha_old) const

@@ -37,4 +37,11 @@ namespace ausroll::material
             for (unsigned int l = 0; l < 3; ++l)
               (*tangent)[i][j][k][l] = r.tangent[i][j][k][l];
   }
+
+  void SmallStrainModel::rebase(MaterialState &state, const Tensor<2, 3> &F) const
+  {
+    state.plastic_strain = dealii::symmetrize(F) - dealii::unit_symmetric_tensor<3>()
+                           - stress_return->elasticity().strain(state.stress);
+    state.deformation_gradient = F;
+  }
 } // namespace ausroll::material

@@ -78,4 +78,36 @@ namespace ausroll::material
             (*tangent)[i][J][k][L] = s;
           }
   }
+
+  void TotalLagrangianModel::rebase(MaterialState &state, const Tensor<2, 3> &F) const
+  {
+    const Tensor<2, 3>          F_inv = dealii::invert(F);
+    const SymmetricTensor<2, 3> S = dealii::symmetrize(
+        dealii::determinant(F) * F_inv * Tensor<2, 3>(state.stress) * dealii::transpose(F_inv));
+    const SymmetricTensor<2, 3> E
+        = 0.5 * (dealii::symmetrize(dealii::transpose(F) * F) - dealii::unit_symmetric_tensor<3>());
+    state.plastic_strain = E - stress_return->elasticity().strain(S);
+    state.deformation_gradient = F;
+  }
+
+  double TotalLagrangianModel::yield_function(const MaterialState &state) const
+  {
+    const Tensor<2, 3>         &F = state.deformation_gradient;
+    const Tensor<2, 3>          F_inv = dealii::invert(F);
+    const SymmetricTensor<2, 3> S = dealii::symmetrize(
+        dealii::determinant(F) * F_inv * Tensor<2, 3>(state.stress) * dealii::transpose(F_inv));
+    return stress_return->yield_function(S, state.back_stress, state.equivalent_plastic_strain);
+  }
+
+  void TotalLagrangianModel::make_admissible(MaterialState &state) const
+  {
+    const Tensor<2, 3>         &F = state.deformation_gradient;
+    const double                J = dealii::determinant(F);
+    const Tensor<2, 3>          F_inv = dealii::invert(F);
+    const SymmetricTensor<2, 3> S
+        = dealii::symmetrize(J * F_inv * Tensor<2, 3>(state.stress) * dealii::transpose(F_inv));
+    const SymmetricTensor<2, 3> S_admissible = stress_return->project_onto_yield_surface(
+        S, state.back_stress, state.equivalent_plastic_strain);
+    state.stress = dealii::symmetrize(F * Tensor<2, 3>(S_admissible) * dealii::transpose(F)) / J;
+  }
 } // namespace ausroll::material

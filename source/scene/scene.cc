@@ -1,3 +1,4 @@
+#include <ausroll/adaptivity/refinement_indicators.h>
 #include <ausroll/core/exceptions.h>
 #include <ausroll/core/parse_utilities.h>
 #include <ausroll/geometry/workpiece.h>
@@ -5,6 +6,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
+#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
@@ -74,6 +76,15 @@ namespace ausroll::scene
     assembler = std::make_unique<mechanics::Assembler<dim>>(
         mapping, fe, parameters.model.quadrature_points, kinematics, *model, boundary_conditions);
     setup_system();
+    material_points.initialize(
+        triangulation.begin_active(), triangulation.end(), assembler->quadrature().size());
+    point_transfer = std::make_unique<adaptivity::MaterialPointTransfer<dim>>(
+        triangulation,
+        material_points,
+        assembler->quadrature(),
+        parameters.adaptivity.polynomial_transfer ? adaptivity::TransferMethod::polynomial
+                                                  : adaptivity::TransferMethod::nearest_point,
+        [this](material::MaterialState &state) { model->make_admissible(state); });
     setup_postprocessing();
 
     // Output directory and files.
@@ -121,9 +132,6 @@ namespace ausroll::scene
     solution_ghosted.reinit(owned_dofs, relevant_dofs, comm);
     residual_ghosted.reinit(owned_dofs, relevant_dofs, comm);
 
-    // Material points on the locally owned cells, in the undeformed state.
-    const unsigned int n_q = assembler->quadrature().size();
-    material_points.initialize(triangulation.begin_active(), triangulation.end(), n_q);
     double h_min = std::numeric_limits<double>::max();
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -141,6 +149,8 @@ namespace ausroll::scene
   template <int dim>
   void Scene<dim>::setup_postprocessing()
   {
+    monitors.clear();
+    reaction_boundaries.clear();
     const std::string entry = "Postprocess/Monitor points";
     for (const auto &[name, point] :
          parse_named_points<dim>(parameters.postprocess.monitor_points, entry))
@@ -191,6 +201,91 @@ namespace ausroll::scene
     probes = std::make_unique<io::LineProbes<dim>>(parameters.postprocess.line_probes,
                                                    parameters.model.quadrature_points);
     probes->locate(mapping, dof_handler);
+  }
+
+  template <int dim>
+  bool Scene<dim>::adapt_mesh(const double next_time)
+  {
+    const adaptivity::AdaptivityParameters &p = parameters.adaptivity;
+    {
+      TimerOutput::Scope                 scope(timer, "adaptivity");
+      const adaptivity::DieDistance<dim> die_distance
+          = contact.active() ? adaptivity::DieDistance<dim>(
+                [this, next_time](const Point<dim> &x) {
+                  return std::min(contact.distance_to_dies(x, time),
+                                  contact.distance_to_dies(x, next_time));
+                })
+                             : adaptivity::DieDistance<dim>();
+      if (!adaptivity::mark_cells(p,
+                                  triangulation,
+                                  mapping,
+                                  dof_handler,
+                                  solution_ghosted,
+                                  material_points,
+                                  die_distance))
+        return false;
+
+      // Carry displacement, material points and contact statuses to the new mesh.
+      const std::vector<double> contact_state = contact.pack_state();
+      parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector> transfer(
+          dof_handler);
+      triangulation.prepare_coarsening_and_refinement();
+      transfer.prepare_for_coarsening_and_refinement(solution_ghosted);
+      point_transfer->prepare();
+      triangulation.execute_coarsening_and_refinement();
+
+      setup_system();
+      point_transfer->unpack();
+      TrilinosWrappers::MPI::Vector interpolated(owned_dofs, comm);
+      transfer.interpolate(interpolated);
+      hanging_constraints.distribute(interpolated);
+      solution = interpolated;
+      solution_ghosted = solution;
+      step_start = solution;
+      rebase_material_points();
+      contact.unpack_state(contact_state);
+      setup_postprocessing();
+    }
+    log << "  mesh adapted: " << triangulation.n_global_active_cells() << " cells, "
+        << dof_handler.n_dofs() << " DoFs" << std::endl;
+
+    if (p.reequilibrate)
+    {
+      // Equilibrium on the new mesh at the same time (no load change).
+      const solver::NewtonResult result = newton.solve(*this, newton_log);
+      if (!result.converged)
+        throw RunFailure("re-equilibration after mesh adaptation at t = " + std::to_string(time)
+                         + " failed: " + result.reason);
+      commit_step();
+    }
+    return true;
+  }
+
+  template <int dim>
+  void Scene<dim>::rebase_material_points()
+  {
+    FEValues<dim>                    fe_values(mapping,
+                            fe,
+                            assembler->quadrature(),
+                            update_values | update_gradients | update_quadrature_points);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<Tensor<2, dim>>      grad_u(assembler->quadrature().size());
+    std::vector<Tensor<1, dim>>      u(assembler->quadrature().size());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_gradients(solution_ghosted, grad_u);
+        fe_values[displacement].get_function_values(solution_ghosted, u);
+        const auto points = material_points.get_data(cell);
+        for (unsigned int q = 0; q < points.size(); ++q)
+        {
+          model->rebase(
+              points[q]->committed,
+              kinematics.deformation_gradient(grad_u[q], u[q], fe_values.quadrature_point(q)));
+          points[q]->trial = points[q]->committed;
+        }
+      }
   }
 
   template <int dim>
@@ -382,6 +477,17 @@ namespace ausroll::scene
 
     for (const auto &column : contact.history_columns())
       row.push_back(column);
+
+    // Largest yield-function value of the committed states relative to the initial yield stress:
+    // stays at round-off level unless something (e.g. a mesh transfer) breaks admissibility.
+    double excess = -1.;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &point : material_points.get_data(cell))
+          excess = std::max(excess, model->yield_function(point->committed));
+    row.emplace_back("yield_excess",
+                     std::max(0., Utilities::MPI::max(excess, comm))
+                         / parameters.material.yield_stress);
     return row;
   }
 
@@ -396,11 +502,13 @@ namespace ausroll::scene
     fields.emplace_back("von_mises_stress", Vector<float>(n));
     fields.emplace_back("equivalent_plastic_strain", Vector<float>(n));
     fields.emplace_back("subdomain", Vector<float>(n));
+    fields.emplace_back("level", Vector<float>(n));
 
     for (const auto &cell : triangulation.active_cell_iterators())
     {
       const unsigned int k = cell->active_cell_index();
       fields[6].second[k] = cell->subdomain_id();
+      fields[7].second[k] = cell->level();
       if (!cell->is_locally_owned())
         continue;
       const auto points = material_points.get_data(cell);
@@ -578,6 +686,9 @@ namespace ausroll::scene
       if (!assemble(false, message))
         throw RunFailure("initial state: " + message);
       contact.commit(); // gaps of the undeformed state start the load-increment ratio
+      for (unsigned int cycle = 0; cycle < parameters.adaptivity.initial_cycles; ++cycle)
+        if (!adapt_mesh(std::min(nominal_dt, loading.end_time)))
+          break;
       solver::NewtonResult initial;
       initial.converged = true;
       history->add_row(history_row(initial, 0));
@@ -624,6 +735,10 @@ namespace ausroll::scene
         if (entry.first != "wall_seconds" && entry.first != "step")
           line << " " << entry.first << "=" << (std::abs(entry.second) < 1e-12 ? 0. : entry.second);
       regression_log << line.str() << std::endl;
+
+      if (parameters.adaptivity.interval > 0 && step_number % parameters.adaptivity.interval == 0
+          && t_done < t_end * (1. - 1e-12))
+        adapt_mesh(std::min(t_end, t_done + dt));
 
       const unsigned int interval = parameters.output.interval;
       if (interval > 0 && step_number % interval == 0)

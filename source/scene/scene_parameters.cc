@@ -20,6 +20,7 @@ namespace ausroll::scene
     material::MaterialParameters::declare_parameters(prm);
     mechanics::BoundaryConditionParameters::declare_parameters(prm);
     contact::ContactParameters::declare_parameters(prm);
+    adaptivity::AdaptivityParameters::declare_parameters(prm);
     contact::ContactParameters::declare_parameters(prm);
     solver::LoadingParameters::declare_parameters(prm);
     solver::SolverParameters::declare_parameters(prm);
@@ -35,6 +36,7 @@ namespace ausroll::scene
     material.parse_parameters(prm);
     boundary_conditions.parse_parameters(prm);
     contact.parse_parameters(prm, input_directory);
+    adaptivity.parse_parameters(prm);
     contact.parse_parameters(prm, input_directory);
     loading.parse_parameters(prm);
     solver.parse_parameters(prm);

@@ -32,6 +32,9 @@ def main():
     parser.add_argument("second")
     parser.add_argument("--rel-tol", type=float, default=1e-8)
     parser.add_argument("--ignore", nargs="*", default=["wall_seconds"])
+    parser.add_argument("--noise-floor", type=float, default=1e-9,
+                        help="columns whose values all stay below this fraction of the largest "
+                             "force-like value in the file are round-off and not compared")
     args = parser.parse_args()
 
     a, b = read(args.first), read(args.second)
@@ -44,12 +47,18 @@ def main():
         print(f"columns missing in {args.second}: {missing}")
         return 1
 
+    largest = 0.0
+    for c in columns:
+        if c in ("step", "time", "load_factor", "dofs", "cells", "newton_iterations", "cutbacks"):
+            continue
+        for r in a + b:
+            largest = max(largest, abs(float(r[c])))
     worst = (0.0, None, None)
     for c in columns:
         va = [float(r[c]) for r in a]
         vb = [float(r[c]) for r in b]
         scale = max(max(abs(x) for x in va), max(abs(x) for x in vb))
-        if scale == 0.0:
+        if scale == 0.0 or scale < args.noise_floor * largest:
             continue
         for k, (x, y) in enumerate(zip(va, vb)):
             d = abs(x - y) / scale

@@ -81,6 +81,22 @@ namespace ausroll::contact
                const std::function<double(const dealii::Point<dim> &)> &volume_factor,
                const double                                             length_scale);
 
+    /**
+     * The committed state of every closed node of all ranks (reference position, status, stick
+     * point, slip direction, gap, forces), to carry statuses over a mesh change or into a
+     * checkpoint. Same result on all ranks.
+     */
+    std::vector<double> pack_state() const;
+
+    /**
+     * Restore statuses saved by pack_state() on the nodes of the current mesh (matched by reference
+     * position). Nodes that are new (mesh refinement) and touch a die are closed.
+     */
+    void unpack_state(const std::vector<double> &state);
+
+    /** Distance from @p x to the nearest die (|gap|) at time @p t (infinite if none in range). */
+    double distance_to_dies(const dealii::Point<dim> &x, const double t) const;
+
     /** Time of the current iterate (die poses). */
     void set_time(const double t) { time = t; }
 

@@ -55,6 +55,36 @@ namespace ausroll::material
 
     /** The elastic-plastic stress return used by the model. */
     virtual const PlasticityModel &plasticity() const = 0;
+
+    /**
+     * After the state was moved to a new mesh (MaterialPointTransfer): make @p state consistent
+     * with the deformation gradient @p F of the interpolated displacement while keeping its
+     * stress and hardening variables, so that the next evaluation at @p F returns the transferred
+     * stress. Default (models integrating from the last deformation gradient): F_n = F.
+     */
+    virtual void rebase(MaterialState &state, const dealii::Tensor<2, 3> &F) const
+    {
+      state.deformation_gradient = F;
+    }
+
+    /**
+     * Yield function of @p state in the stress measure the model returns in (Cauchy for small
+     * strain and updated Lagrangian). Positive values are violations; used to check that mesh
+     * transfer creates none.
+     */
+    virtual double yield_function(const MaterialState &state) const
+    {
+      return plasticity().yield_function(
+          state.stress, state.back_stress, state.equivalent_plastic_strain);
+    }
+
+    /** Project the stress of @p state onto the yield surface if it lies outside (after a mesh
+        transfer); in the stress measure of yield_function(). */
+    virtual void make_admissible(MaterialState &state) const
+    {
+      state.stress = plasticity().project_onto_yield_surface(
+          state.stress, state.back_stress, state.equivalent_plastic_strain);
+    }
   };
 
   /**

@@ -53,6 +53,12 @@ namespace ausroll::material
 
     bool is_small_strain() const override { return false; }
 
+    /** Yield function of the Kirchhoff stress tau = J sigma. */
+    double yield_function(const MaterialState &state) const override;
+
+    /** Projection of the Kirchhoff stress tau = J sigma. */
+    void make_admissible(MaterialState &state) const override;
+
     const PlasticityModel &plasticity() const override { return *stress_return; }
 
   private:

@@ -29,6 +29,18 @@ namespace ausroll::material
 
     bool is_small_strain() const override { return inner->is_small_strain(); }
 
+    /** The inner model's yield function. */
+    double yield_function(const MaterialState &state) const override
+    {
+      return inner->yield_function(state);
+    }
+
+    /** The inner model's projection. */
+    void make_admissible(MaterialState &state) const override { inner->make_admissible(state); }
+
+    /** The inner model's rebase with the state's own out-of-plane stretch. */
+    void rebase(MaterialState &state, const dealii::Tensor<2, 3> &F) const override;
+
     const PlasticityModel &plasticity() const override { return inner->plasticity(); }
 
   private:

@@ -51,6 +51,21 @@ namespace ausroll::material
                                            const dealii::SymmetricTensor<2, 3> &back_stress_old,
                                            const double alpha_old) const = 0;
 
+    /**
+     * The stress on the yield surface closest to @p stress in the deviatoric sense, or @p stress
+     * itself if it is admissible. Used after a mesh transfer (polynomial interpolation may leave
+     * a state slightly outside). Default: no projection (elastic).
+     */
+    virtual dealii::SymmetricTensor<2, 3>
+    project_onto_yield_surface(const dealii::SymmetricTensor<2, 3> &stress,
+                               const dealii::SymmetricTensor<2, 3> &back_stress,
+                               const double                         alpha) const
+    {
+      (void)back_stress;
+      (void)alpha;
+      return stress;
+    }
+
     /** Value of the yield function (negative inside the elastic domain). */
     virtual double yield_function(const dealii::SymmetricTensor<2, 3> &stress,
                                   const dealii::SymmetricTensor<2, 3> &back_stress,
@@ -117,6 +132,12 @@ namespace ausroll::material
     double yield_function(const dealii::SymmetricTensor<2, 3> &stress,
                           const dealii::SymmetricTensor<2, 3> &back_stress,
                           const double                         alpha) const override;
+
+    /** Radial scaling of dev(sigma) - beta onto the yield surface; pressure unchanged. */
+    dealii::SymmetricTensor<2, 3>
+    project_onto_yield_surface(const dealii::SymmetricTensor<2, 3> &stress,
+                               const dealii::SymmetricTensor<2, 3> &back_stress,
+                               const double                         alpha) const override;
 
   private:
     HardeningLaw hardening;         ///< isotropic hardening sigma_y(alpha)

@@ -27,6 +27,9 @@ namespace ausroll::material
 
     bool is_small_strain() const override { return true; }
 
+    /** Keep the stress: eps_p = eps(F) - C^-1 : sigma. */
+    void rebase(MaterialState &state, const dealii::Tensor<2, 3> &F) const override;
+
     const PlasticityModel &plasticity() const override { return *stress_return; }
 
   private:

@@ -33,6 +33,15 @@ namespace ausroll::material
 
     bool is_small_strain() const override { return false; }
 
+    /** Yield function of the 2nd Piola-Kirchhoff stress S = J F^-1 sigma F^-T. */
+    double yield_function(const MaterialState &state) const override;
+
+    /** Projection of the 2nd Piola-Kirchhoff stress. */
+    void make_admissible(MaterialState &state) const override;
+
+    /** Keep the stress: E_p = E(F) - C^-1 : S with S = J F^-1 sigma F^-T. */
+    void rebase(MaterialState &state, const dealii::Tensor<2, 3> &F) const override;
+
     const PlasticityModel &plasticity() const override { return *stress_return; }
 
   private:

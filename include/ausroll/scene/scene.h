@@ -5,6 +5,7 @@
  */
 #pragma once
 
+#include <ausroll/adaptivity/material_point_transfer.h>
 #include <ausroll/contact/contact_operator.h>
 #include <ausroll/io/history.h>
 #include <ausroll/io/line_probe.h>
@@ -86,6 +87,15 @@ namespace ausroll::scene
                       unsigned int         &cutbacks);
     /** Write VTU output of the current (converged) state. */
     void write_output();
+    /**
+     * Adapt the mesh by the indicators of `Adaptivity` (contact band: die positions at the current
+     * time and at @p next_time), transfer solution, material points and contact statuses, and
+     * re-equilibrate. Returns false if no cell was flagged.
+     */
+    bool adapt_mesh(const double next_time);
+    /** After a mesh transfer: make the material points consistent with the interpolated
+        displacement while keeping their stresses (ConstitutiveModel::rebase). */
+    void rebase_material_points();
     /** Locate the monitor points and collect the DoFs of the reaction boundaries. */
     void setup_postprocessing();
 
@@ -120,7 +130,8 @@ namespace ausroll::scene
     dealii::TrilinosWrappers::MPI::Vector  external_force;   ///< surface loads
     dealii::TrilinosWrappers::MPI::Vector  residual_ghosted; ///< residual with ghost entries
 
-    mechanics::MaterialPointStorage<dim> material_points;
+    mechanics::MaterialPointStorage<dim>                    material_points;
+    std::unique_ptr<adaptivity::MaterialPointTransfer<dim>> point_transfer;
 
     mechanics::PlanarKinematics<dim>             kinematics;
     std::unique_ptr<material::ConstitutiveModel> model;

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <ausroll/adaptivity/adaptivity_parameters.h>
 #include <ausroll/contact/contact_parameters.h>
 #include <ausroll/geometry/geometry_parameters.h>
 #include <ausroll/io/output_parameters.h>
@@ -30,6 +31,7 @@ namespace ausroll::scene
     material::MaterialParameters           material;               ///< `Material`
     mechanics::BoundaryConditionParameters boundary_conditions;    ///< `Boundary conditions`
     contact::ContactParameters             contact;                ///< `Contact`
+    adaptivity::AdaptivityParameters       adaptivity;             ///< `Adaptivity`
     solver::LoadingParameters              loading;                ///< `Loading`
     solver::SolverParameters               solver;                 ///< `Solver`
     io::OutputParameters                   output;                 ///< `Output`

@@ -1,0 +1,42 @@
+/**
+ * @file adaptivity_parameters.h
+ * The `Adaptivity` subsection: when and where the mesh is refined and coarsened.
+ */
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace ausroll::adaptivity
+{
+  /**
+   * Parameters of subsection `Adaptivity`. Indicators combine: a cell is refined if any selected
+   * indicator asks for it, and coarsened only if every selected indicator allows it.
+   */
+  struct AdaptivityParameters
+  {
+    unsigned int interval = 0;            ///< `Interval`: adapt every this many steps (0: never)
+    unsigned int initial_cycles = 0;      ///< `Initial refinement cycles` before the first step
+    bool         kelly = false;           ///< `Indicators` contains `Kelly`
+    bool         contact = false;         ///< `Indicators` contains `contact`
+    bool         plastic_strain = false;  ///< `Indicators` contains `plastic strain`
+    double       refine_fraction = 0.3;   ///< `Refine fraction` (Kelly, plastic strain)
+    double       coarsen_fraction = 0.05; ///< `Coarsen fraction` (Kelly, plastic strain)
+    double       contact_band = 1.;       ///< `Contact band` (mm)
+    unsigned int max_level = 8;           ///< `Maximum level` of refinement
+    unsigned int min_level = 0;           ///< `Minimum level` (no coarsening below)
+    double       min_cell_size = 0.; ///< `Minimum cell size` (mm; cells this small are not refined)
+    bool         reequilibrate = true;       ///< `Re-equilibrate` after transfer
+    bool         polynomial_transfer = true; ///< `State transfer` = polynomial (else nearest point)
+
+    /** True if the mesh is adapted at all. */
+    bool active() const
+    {
+      return (interval > 0 || initial_cycles > 0) && (kelly || contact || plastic_strain);
+    }
+
+    /** Declare subsection `Adaptivity`. */
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    /** Read subsection `Adaptivity`. */
+    void parse_parameters(dealii::ParameterHandler &prm);
+  };
+} // namespace ausroll::adaptivity

@@ -1,0 +1,90 @@
+#include <ausroll/adaptivity/adaptivity_parameters.h>
+#include <ausroll/core/exceptions.h>
+#include <ausroll/core/parse_utilities.h>
+
+namespace ausroll::adaptivity
+{
+  using namespace dealii;
+
+  void AdaptivityParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adaptivity");
+    prm.declare_entry("Interval",
+                      "0",
+                      Patterns::Integer(0),
+                      "Adapt the mesh after every this many load steps (0: never during the run).");
+    prm.declare_entry(
+        "Initial refinement cycles",
+        "0",
+        Patterns::Integer(0, 20),
+        "Refinement cycles before the first step (contact band around the dies at the "
+        "start and end of the first step).");
+    prm.declare_entry("Indicators",
+                      "contact",
+                      Patterns::MultipleSelection("Kelly|contact|plastic strain"),
+                      "Comma-separated combination: Kelly (jumps of the displacement gradient), "
+                      "contact (cells near a die now and at the next step), plastic strain "
+                      "(variation of the equivalent plastic strain within a cell).");
+    prm.declare_entry("Refine fraction",
+                      "0.3",
+                      Patterns::Double(0., 1.),
+                      "Kelly / plastic strain: fraction of the indicator to refine.");
+    prm.declare_entry("Coarsen fraction",
+                      "0.05",
+                      Patterns::Double(0., 1.),
+                      "Kelly / plastic strain: fraction of the indicator that may be coarsened.");
+    prm.declare_entry(
+        "Contact band",
+        "1",
+        Patterns::Double(0.),
+        "contact: cells closer than this to a die (mm) are refined; cells farther than "
+        "twice the band plus their size may be coarsened.");
+    prm.declare_entry(
+        "Maximum level", "8", Patterns::Integer(0, 30), "No cell is refined beyond this level.");
+    prm.declare_entry(
+        "Minimum level", "0", Patterns::Integer(0, 30), "No cell is coarsened below this level.");
+    prm.declare_entry("Minimum cell size",
+                      "0",
+                      Patterns::Double(0.),
+                      "Cells smaller than this (mm) are not refined.");
+    prm.declare_entry(
+        "State transfer",
+        "polynomial",
+        Patterns::Selection("polynomial|nearest point"),
+        "Material-point state across refinement: polynomial (interpolation through the "
+        "Gauss points / least-squares fit when coarsening, then projection onto the "
+        "yield surface) or nearest point (copy / average; more diffusive).");
+    prm.declare_entry("Re-equilibrate",
+                      "true",
+                      Patterns::Bool(),
+                      "Solve for equilibrium on the new mesh before the next step (recommended).");
+    prm.leave_subsection();
+  }
+
+  void AdaptivityParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adaptivity");
+    interval = prm.get_integer("Interval");
+    initial_cycles = prm.get_integer("Initial refinement cycles");
+    kelly = contact = plastic_strain = false;
+    for (const std::string &name : split_and_trim(prm.get("Indicators"), ','))
+    {
+      kelly = kelly || name == "Kelly";
+      contact = contact || name == "contact";
+      plastic_strain = plastic_strain || name == "plastic strain";
+    }
+    refine_fraction = prm.get_double("Refine fraction");
+    coarsen_fraction = prm.get_double("Coarsen fraction");
+    contact_band = prm.get_double("Contact band");
+    max_level = prm.get_integer("Maximum level");
+    min_level = prm.get_integer("Minimum level");
+    min_cell_size = prm.get_double("Minimum cell size");
+    reequilibrate = prm.get_bool("Re-equilibrate");
+    polynomial_transfer = prm.get("State transfer") == "polynomial";
+    prm.leave_subsection();
+    require(refine_fraction + coarsen_fraction <= 1.,
+            "Adaptivity/Coarsen fraction",
+            "Refine fraction + Coarsen fraction must not exceed 1");
+    require(min_level <= max_level, "Adaptivity/Minimum level", "must not exceed Maximum level");
+  }
+} // namespace ausroll::adaptivity

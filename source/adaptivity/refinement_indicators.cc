@@ -1,0 +1,162 @@
+#include <ausroll/adaptivity/refinement_indicators.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/error_estimator.h>
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+namespace ausroll::adaptivity
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /** Run a fixed-fraction marking on @p indicator and return the flags it would set. */
+    template <int dim>
+    void fixed_fraction_flags(parallel::distributed::Triangulation<dim> &triangulation,
+                              const Vector<float>                       &indicator,
+                              const double                               refine_fraction,
+                              const double                               coarsen_fraction,
+                              std::vector<bool>                         &refine,
+                              std::vector<bool>                         &coarsen)
+    {
+      triangulation.clear_user_flags();
+      for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        cell->clear_refine_flag();
+        cell->clear_coarsen_flag();
+      }
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
+          triangulation, indicator, refine_fraction, coarsen_fraction);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          const unsigned int k = cell->active_cell_index();
+          refine[k] = refine[k] || cell->refine_flag_set();
+          coarsen[k] = coarsen[k] && cell->coarsen_flag_set();
+        }
+    }
+  } // namespace
+
+  template <int dim>
+  bool mark_cells(const AdaptivityParameters                 &parameters,
+                  parallel::distributed::Triangulation<dim>  &triangulation,
+                  const Mapping<dim>                         &mapping,
+                  const DoFHandler<dim>                      &dof_handler,
+                  const TrilinosWrappers::MPI::Vector        &solution,
+                  const mechanics::MaterialPointStorage<dim> &material_points,
+                  const DieDistance<dim>                     &die_distance)
+  {
+    const unsigned int n_cells = triangulation.n_active_cells();
+    std::vector<bool>  refine(n_cells, false), coarsen(n_cells, true);
+
+    if (parameters.kelly)
+    {
+      Vector<float> indicator(n_cells);
+      KellyErrorEstimator<dim>::estimate(mapping,
+                                         dof_handler,
+                                         QGauss<dim - 1>(dof_handler.get_fe().degree + 1),
+                                         {},
+                                         solution,
+                                         indicator,
+                                         ComponentMask(),
+                                         nullptr,
+                                         numbers::invalid_unsigned_int,
+                                         triangulation.locally_owned_subdomain());
+      fixed_fraction_flags(triangulation,
+                           indicator,
+                           parameters.refine_fraction,
+                           parameters.coarsen_fraction,
+                           refine,
+                           coarsen);
+    }
+
+    if (parameters.plastic_strain)
+    {
+      Vector<float> indicator(n_cells);
+      double        largest = 0.;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          double lo = std::numeric_limits<double>::max(), hi = 0.;
+          for (const auto &point : material_points.get_data(cell))
+          {
+            lo = std::min(lo, point->committed.equivalent_plastic_strain);
+            hi = std::max(hi, point->committed.equivalent_plastic_strain);
+          }
+          indicator[cell->active_cell_index()] = hi - lo;
+          largest = std::max(largest, hi - lo);
+        }
+      if (Utilities::MPI::max(largest, triangulation.get_communicator()) > 0.)
+        fixed_fraction_flags(triangulation,
+                             indicator,
+                             parameters.refine_fraction,
+                             parameters.coarsen_fraction,
+                             refine,
+                             coarsen);
+    }
+
+    if (parameters.contact && die_distance)
+    {
+      // Deformed cell centre from the displacement at the reference centre.
+      Point<dim> unit_centre;
+      for (unsigned int d = 0; d < dim; ++d)
+        unit_centre[d] = 0.5;
+      const Quadrature<dim> centre(unit_centre);
+      FEValues<dim>         fe_values(
+          mapping, dof_handler.get_fe(), centre, update_values | update_quadrature_points);
+      std::vector<Tensor<1, dim>>      u(1);
+      const FEValuesExtractors::Vector displacement(0);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_values(solution, u);
+          const Point<dim> x = fe_values.quadrature_point(0) + u[0];
+          const double     d = die_distance(x);
+          const double     size = cell->diameter();
+          const unsigned   k = cell->active_cell_index();
+          if (d < parameters.contact_band + 0.5 * size)
+            refine[k] = true;
+          if (d < 2. * (parameters.contact_band + size))
+            coarsen[k] = false;
+        }
+    }
+
+    // Apply the flags with the limits.
+    bool any = false;
+    for (const auto &cell : triangulation.active_cell_iterators())
+    {
+      cell->clear_refine_flag();
+      cell->clear_coarsen_flag();
+      if (!cell->is_locally_owned())
+        continue;
+      const unsigned int k = cell->active_cell_index();
+      if (refine[k] && cell->level() < static_cast<int>(parameters.max_level)
+          && 0.5 * cell->minimum_vertex_distance() >= parameters.min_cell_size)
+      {
+        cell->set_refine_flag();
+        any = true;
+      }
+      else if (coarsen[k] && !refine[k] && cell->level() > static_cast<int>(parameters.min_level))
+      {
+        cell->set_coarsen_flag();
+        any = true;
+      }
+    }
+    return Utilities::MPI::logical_or(any, triangulation.get_communicator());
+  }
+
+  template bool mark_cells<2>(const AdaptivityParameters &,
+                              parallel::distributed::Triangulation<2> &,
+                              const Mapping<2> &,
+                              const DoFHandler<2> &,
+                              const TrilinosWrappers::MPI::Vector &,
+                              const mechanics::MaterialPointStorage<2> &,
+                              const DieDistance<2> &);
+} // namespace ausroll::adaptivity
