@@ -17,6 +17,7 @@ namespace
   void print_usage(std::ostream &out)
   {
     out << "Usage: ausroll FILE.prm              run the scene described by FILE.prm\n"
+           "       ausroll FILE.prm --resume     continue FILE.prm from its latest checkpoint\n"
            "       ausroll --print-parameters[=prm|markdown]\n"
            "                                     print every parameter with its default and\n"
            "                                     documentation (default format: prm)\n"
@@ -38,7 +39,8 @@ int main(int argc, char **argv)
 
   try
   {
-    if (argc != 2)
+    const bool resume = argc == 3 && std::string(argv[2]) == "--resume";
+    if (argc != 2 && !resume)
     {
       if (root)
         print_usage(std::cerr);
@@ -73,7 +75,7 @@ int main(int argc, char **argv)
       }
       return 1;
     }
-    ausroll::scene::run_scene(arg, MPI_COMM_WORLD);
+    ausroll::scene::run_scene(arg, MPI_COMM_WORLD, resume);
   }
   catch (const ausroll::InputError &e)
   {

@@ -151,7 +151,9 @@ namespace ausroll::geometry
   } // namespace
 
   template <int dim>
-  void create_workpiece(const GeometryParameters &parameters, Triangulation<dim> &triangulation)
+  void create_workpiece(const GeometryParameters &parameters,
+                        Triangulation<dim>       &triangulation,
+                        const bool                refine)
   {
     Triangulation<dim> coarse;
     if (parameters.type == WorkpieceType::mesh_file)
@@ -179,10 +181,12 @@ namespace ausroll::geometry
       if (parameters.type == WorkpieceType::quarter_disk)
         attach_disk_manifolds(parameters, triangulation);
     }
+    if (!refine)
+      return;
     triangulation.refine_global(parameters.global_refinements);
     refine_towards_point(parameters, triangulation);
   }
 
-  template void create_workpiece<2>(const GeometryParameters &, Triangulation<2> &);
-  template void create_workpiece<3>(const GeometryParameters &, Triangulation<3> &);
+  template void create_workpiece<2>(const GeometryParameters &, Triangulation<2> &, const bool);
+  template void create_workpiece<3>(const GeometryParameters &, Triangulation<3> &, const bool);
 } // namespace ausroll::geometry

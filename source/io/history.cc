@@ -3,6 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <filesystem>
 #include <iomanip>
 
 namespace ausroll::io
@@ -13,6 +14,9 @@ namespace ausroll::io
   {
     if (writer)
     {
+      std::error_code ec;
+      header_pending = !append || !std::filesystem::exists(path, ec)
+                       || std::filesystem::file_size(path, ec) == 0;
       file.open(path, append ? std::ios::app : std::ios::trunc);
       if (!file)
         throw InputError("Output/Directory: cannot write '" + path + "'");
@@ -26,7 +30,7 @@ namespace ausroll::io
     {
       for (const auto &entry : row)
         columns.push_back(entry.first);
-      if (writer && file.tellp() == 0)
+      if (writer && header_pending)
       {
         for (unsigned int i = 0; i < columns.size(); ++i)
           file << (i ? "," : "") << columns[i];
@@ -40,5 +44,27 @@ namespace ausroll::io
     for (unsigned int i = 0; i < row.size(); ++i)
       file << (i ? "," : "") << row[i].second;
     file << std::endl;
+  }
+
+  std::unique_ptr<History>
+  History::resume(const MPI_Comm comm, const std::string &path, const unsigned int last_step)
+  {
+    std::vector<std::string> columns;
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+    {
+      std::ifstream            in(path);
+      std::vector<std::string> kept;
+      std::string              line;
+      while (std::getline(in, line))
+        if (kept.empty() || std::stod(line.substr(0, line.find(','))) <= last_step)
+          kept.push_back(line);
+      in.close();
+      std::ofstream out(path, std::ios::trunc);
+      for (const std::string &l : kept)
+        out << l << '\n';
+    }
+    MPI_Barrier(comm);
+    auto history = std::make_unique<History>(comm, path, true);
+    return history;
   }
 } // namespace ausroll::io

@@ -2,6 +2,7 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/core/parse_utilities.h>
 #include <ausroll/geometry/workpiece.h>
+#include <ausroll/io/checkpoint.h>
 #include <ausroll/scene/scene.h>
 
 #include <deal.II/base/mpi.h>
@@ -46,9 +47,10 @@ namespace ausroll::scene
   } // namespace
 
   template <int dim>
-  Scene<dim>::Scene(const SceneParameters &prm, const MPI_Comm comm)
+  Scene<dim>::Scene(const SceneParameters &prm, const MPI_Comm comm, const bool resume)
       : parameters(prm)
       , comm(comm)
+      , resuming(resume)
       , rank(Utilities::MPI::this_mpi_process(comm))
       , log(std::cout, prints(prm.output.verbosity, {Verbosity::normal, Verbosity::verbose}, rank))
       , newton_log(std::cout, prints(prm.output.verbosity, {Verbosity::verbose}, rank))
@@ -72,7 +74,16 @@ namespace ausroll::scene
       , newton(prm.solver)
   {
     TimerOutput::Scope scope(timer, "setup");
-    geometry::create_workpiece(parameters.geometry, triangulation);
+    const std::string &dir = parameters.output.directory;
+    if (resuming)
+    {
+      // The coarse mesh, then the refined, partitioned mesh of the checkpoint.
+      geometry::create_workpiece(parameters.geometry, triangulation, /*refine=*/false);
+      checkpoint_directory = io::CheckpointDirectory(dir, comm).latest();
+      triangulation.load(checkpoint_directory + "/mesh");
+    }
+    else
+      geometry::create_workpiece(parameters.geometry, triangulation);
     assembler = std::make_unique<mechanics::Assembler<dim>>(
         mapping, fe, parameters.model.quadrature_points, kinematics, *model, boundary_conditions);
     setup_system();
@@ -85,11 +96,21 @@ namespace ausroll::scene
         parameters.adaptivity.polynomial_transfer ? adaptivity::TransferMethod::polynomial
                                                   : adaptivity::TransferMethod::nearest_point,
         [this](material::MaterialState &state) { model->make_admissible(state); });
+    if (resuming)
+    {
+      // Same order as in write_checkpoint(): solution first, then the material points.
+      parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector> transfer(
+          dof_handler);
+      transfer.deserialize(solution);
+      solution_ghosted = solution;
+      step_start = solution;
+      point_transfer->prepare();
+      point_transfer->unpack();
+    }
     setup_postprocessing();
 
     // Output directory and files.
-    const std::string &dir = parameters.output.directory;
-    int                created = 1;
+    int created = 1;
     if (rank == 0)
     {
       std::error_code ec;
@@ -98,8 +119,75 @@ namespace ausroll::scene
     }
     if (Utilities::MPI::broadcast(comm, created, 0) == 0)
       throw InputError("Output/Directory: cannot create '" + dir + "'");
-    history = std::make_unique<io::History>(comm, dir + "/history.csv");
     writer = std::make_unique<io::SolutionWriter<dim>>(dir, comm);
+  }
+
+  template <int dim>
+  void Scene<dim>::write_checkpoint(const double dt)
+  {
+    TimerOutput::Scope            scope(timer, "checkpoint");
+    const io::CheckpointDirectory checkpoints(parameters.output.directory, comm);
+    const std::string             dir = checkpoints.begin_write();
+
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector> transfer(
+        dof_handler);
+    transfer.prepare_for_serialization(solution_ghosted);
+    point_transfer->prepare();
+    triangulation.save(dir + "/mesh");
+
+    io::CheckpointMetadata meta;
+    meta.values["time"] = {time};
+    meta.values["step"] = {double(step_number)};
+    meta.values["dt"] = {dt};
+    meta.values["output_counter"] = {double(output_counter)};
+    meta.values["last_output_step"] = {double(last_output_step)};
+    meta.values["largest_reference_force"] = {largest_reference_force};
+    meta.values["contact"] = contact.pack_state();
+    std::vector<double> output_times;
+    std::string         output_files;
+    for (const auto &[t, file] : writer->records())
+    {
+      output_times.push_back(t);
+      output_files += (output_files.empty() ? "" : " ") + file;
+    }
+    meta.values["output_times"] = output_times;
+    meta.strings["output_files"] = output_files;
+    if (rank == 0)
+      meta.write(dir + "/metadata.txt");
+    checkpoints.commit();
+    log << "  checkpoint written after step " << step_number << std::endl;
+  }
+
+  template <int dim>
+  double Scene<dim>::restore_checkpoint_state()
+  {
+    io::CheckpointMetadata meta;
+    meta.read(checkpoint_directory + "/metadata.txt");
+    time = meta.get("time");
+    step_number = static_cast<unsigned int>(meta.get("step"));
+    output_counter = static_cast<unsigned int>(meta.get("output_counter"));
+    last_output_step = static_cast<int>(meta.get("last_output_step"));
+    largest_reference_force = meta.get("largest_reference_force");
+    contact.set_time(time);
+    contact.update_geometry(solution_ghosted, false);
+    contact.unpack_state(meta.values["contact"]);
+    std::vector<std::pair<double, std::string>> records;
+    std::istringstream                          files(meta.strings["output_files"]);
+    for (const double t : meta.values["output_times"])
+    {
+      std::string file;
+      files >> file;
+      records.emplace_back(t, file);
+    }
+    writer->set_records(records);
+    history = io::History::resume(comm, parameters.output.directory + "/history.csv", step_number);
+    // Reactions and material points of the restored state (no solve: it is in equilibrium).
+    std::string message;
+    if (!assemble(false, message))
+      throw RunFailure("resumed state: " + message);
+    log << "  resumed from " << checkpoint_directory << " at step " << step_number
+        << ", t = " << time << std::endl;
+    return meta.get("dt");
   }
 
   template <int dim>
@@ -676,12 +764,17 @@ namespace ausroll::scene
                    << "\ncells: " << triangulation.n_global_active_cells()
                    << "  dofs: " << dof_handler.n_dofs() << std::endl;
 
-    // Initial (undeformed) state.
-    solution = 0.;
-    solution_ghosted = solution;
-    step_start = solution;
-    time = 0.;
+    double dt = nominal_dt;
+    if (resuming)
+      dt = restore_checkpoint_state();
+    else
     {
+      // Initial (undeformed) state.
+      history = std::make_unique<io::History>(comm, parameters.output.directory + "/history.csv");
+      solution = 0.;
+      solution_ghosted = solution;
+      step_start = solution;
+      time = 0.;
       std::string message;
       if (!assemble(false, message))
         throw RunFailure("initial state: " + message);
@@ -695,8 +788,7 @@ namespace ausroll::scene
       write_output();
     }
 
-    double       dt = nominal_dt;
-    double       t_done = 0.;
+    double       t_done = time;
     const double t_end = loading.end_time;
     while (t_done < t_end * (1. - 1e-12))
     {
@@ -743,6 +835,14 @@ namespace ausroll::scene
       const unsigned int interval = parameters.output.interval;
       if (interval > 0 && step_number % interval == 0)
         write_output();
+      if (parameters.checkpoint.interval > 0 && step_number % parameters.checkpoint.interval == 0)
+        write_checkpoint(dt);
+      if (!resuming && parameters.checkpoint.abort_after_step == step_number)
+      {
+        log << "  aborting after step " << step_number << " (Checkpoint/Abort after step)"
+            << std::endl;
+        std::_Exit(99);
+      }
 
       dt = cutbacks > 0 ? dt_try : std::min(nominal_dt, dt * loading.step_growth_factor);
     }
@@ -759,10 +859,10 @@ namespace ausroll::scene
     regression_log << "finished: " << step_number << " steps" << std::endl;
   }
 
-  void run_scene(const std::string &parameter_file, const MPI_Comm comm)
+  void run_scene(const std::string &parameter_file, const MPI_Comm comm, const bool resume)
   {
     const SceneParameters     parameters = read_parameter_file(parameter_file);
-    std::unique_ptr<Scene<2>> scene = std::make_unique<Scene<2>>(parameters, comm);
+    std::unique_ptr<Scene<2>> scene = std::make_unique<Scene<2>>(parameters, comm, resume);
     try
     {
       scene->run();

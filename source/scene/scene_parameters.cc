@@ -21,6 +21,7 @@ namespace ausroll::scene
     mechanics::BoundaryConditionParameters::declare_parameters(prm);
     contact::ContactParameters::declare_parameters(prm);
     adaptivity::AdaptivityParameters::declare_parameters(prm);
+    io::CheckpointParameters::declare_parameters(prm);
     contact::ContactParameters::declare_parameters(prm);
     solver::LoadingParameters::declare_parameters(prm);
     solver::SolverParameters::declare_parameters(prm);
@@ -37,6 +38,7 @@ namespace ausroll::scene
     boundary_conditions.parse_parameters(prm);
     contact.parse_parameters(prm, input_directory);
     adaptivity.parse_parameters(prm);
+    checkpoint.parse_parameters(prm);
     contact.parse_parameters(prm, input_directory);
     loading.parse_parameters(prm);
     solver.parse_parameters(prm);

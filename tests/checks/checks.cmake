@@ -108,3 +108,37 @@ ausroll_add_parallel_check(NAME adaptivity_hertz_np2
   PRM ${CMAKE_CURRENT_BINARY_DIR}/hertz_adaptive.prm HISTORY out/history.csv)
 ausroll_add_parallel_check(NAME adaptivity_transfer_np2
   PRM ${CMAKE_CURRENT_BINARY_DIR}/thick_cylinder_adapt.prm HISTORY out/history.csv)
+
+# ---------------------------------------------------------------- checkpoint / restart
+# ausroll_add_resume_check(NAME <name> PRM <file.prm with Checkpoint/Interval> ABORT <step> [NP n])
+function(ausroll_add_resume_check)
+  cmake_parse_arguments(C "" "NAME;PRM;ABORT;NP" "" ${ARGN})
+  set(_run $<TARGET_FILE:ausroll>)
+  if(C_NP)
+    set(_run ${DEAL_II_MPIEXEC} ${DEAL_II_MPIEXEC_NUMPROC_FLAG} ${C_NP} ${DEAL_II_MPIEXEC_PREFLAGS} ${_run})
+  endif()
+  set(_dir ${CMAKE_CURRENT_BINARY_DIR}/${C_NAME})
+  file(MAKE_DIRECTORY ${_dir})
+  add_test(NAME check/${C_NAME}
+    COMMAND ${CMAKE_COMMAND} "-DRUN=${_run}" -DPRM=${C_PRM} -DABORT=${C_ABORT} -DTOL=1e-10
+      "-DCOMPARE=${Python3_EXECUTABLE};${AUSROLL_CHECKS_DIR}/compare_histories.py"
+      -P ${AUSROLL_CHECKS_DIR}/run_resume_check.cmake
+    WORKING_DIRECTORY ${_dir})
+  set_tests_properties(check/${C_NAME} PROPERTIES LABELS check TIMEOUT 900)
+  if(C_NP)
+    set_tests_properties(check/${C_NAME} PROPERTIES PROCESSORS ${C_NP})
+  endif()
+endfunction()
+
+foreach(_scene thick_cylinder_adapt_checkpoint block_slide_checkpoint)
+  configure_file(${AUSROLL_CHECKS_DIR}/scenes/${_scene}.prm.in ${CMAKE_CURRENT_BINARY_DIR}/${_scene}.prm @ONLY)
+endforeach()
+# A run killed after step 5 (checkpoints every 2 steps: resumes from step 4) and resumed ends
+# identical (1e-10) to an uninterrupted one: plasticity + mesh adaptation, contact with friction,
+# and in parallel.
+ausroll_add_resume_check(NAME checkpoint_plastic_adaptive
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/thick_cylinder_adapt_checkpoint.prm ABORT 5)
+ausroll_add_resume_check(NAME checkpoint_contact
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/block_slide_checkpoint.prm ABORT 7)
+ausroll_add_resume_check(NAME checkpoint_contact_np2
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/block_slide_checkpoint.prm ABORT 7 NP 2)

@@ -7,6 +7,7 @@
 #include <mpi.h>
 
 #include <fstream>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,13 +27,21 @@ namespace ausroll::io
     /** History file @p path (truncated, or appended to when @p append). */
     History(const MPI_Comm comm, const std::string &path, const bool append = false);
 
+    /**
+     * Resume a history: keep the header and the rows of steps up to @p last_step of the existing
+     * file @p path (rank 0 rewrites it), then append.
+     */
+    static std::unique_ptr<History>
+    resume(const MPI_Comm comm, const std::string &path, const unsigned int last_step);
+
     /** Append @p row; its column names must match the first row's. */
     void add_row(const HistoryRow &row);
 
   private:
-    bool                     writer;  ///< true on rank 0
-    std::ofstream            file;    ///< the CSV file (rank 0)
-    std::vector<std::string> columns; ///< names fixed by the first row
-    std::string              path;    ///< file name, for messages
+    bool                     writer;                ///< true on rank 0
+    std::ofstream            file;                  ///< the CSV file (rank 0)
+    std::vector<std::string> columns;               ///< names fixed by the first row
+    std::string              path;                  ///< file name, for messages
+    bool                     header_pending = true; ///< the file has no header line yet
   };
 } // namespace ausroll::io

@@ -45,7 +45,7 @@ namespace ausroll::scene
   {
   public:
     /** Build the scene described by @p parameters on communicator @p comm. */
-    Scene(const SceneParameters &parameters, const MPI_Comm comm);
+    Scene(const SceneParameters &parameters, const MPI_Comm comm, const bool resume = false);
 
     /**
      * Run all load steps. Throws RunFailure (after writing the last converged state) when a step
@@ -96,12 +96,19 @@ namespace ausroll::scene
     /** After a mesh transfer: make the material points consistent with the interpolated
         displacement while keeping their stresses (ConstitutiveModel::rebase). */
     void rebase_material_points();
+    /** Write a checkpoint of the converged state (`Checkpoint/Interval`); @p dt: next step size. */
+    void write_checkpoint(const double dt);
+    /** Restore time, statuses, output records and history from the checkpoint being resumed;
+        returns the step size to continue with. */
+    double restore_checkpoint_state();
     /** Locate the monitor points and collect the DoFs of the reaction boundaries. */
     void setup_postprocessing();
 
     SceneParameters parameters; ///< the input
     MPI_Comm        comm;       ///< communicator
-    unsigned int    rank;       ///< this process
+    bool            resuming;   ///< started with --resume: state from the latest checkpoint
+    std::string     checkpoint_directory; ///< checkpoint read when resuming
+    unsigned int    rank;                 ///< this process
 
     dealii::ConditionalOStream log;            ///< status lines (Verbosity normal/verbose)
     dealii::ConditionalOStream newton_log;     ///< Newton iterations (Verbosity verbose)
@@ -173,5 +180,5 @@ namespace ausroll::scene
   };
 
   /** Read @p parameter_file and run the scene on @p comm (dispatch on the dimension). */
-  void run_scene(const std::string &parameter_file, const MPI_Comm comm);
+  void run_scene(const std::string &parameter_file, const MPI_Comm comm, const bool resume = false);
 } // namespace ausroll::scene

@@ -7,6 +7,7 @@
 #include <ausroll/adaptivity/adaptivity_parameters.h>
 #include <ausroll/contact/contact_parameters.h>
 #include <ausroll/geometry/geometry_parameters.h>
+#include <ausroll/io/checkpoint.h>
 #include <ausroll/io/output_parameters.h>
 #include <ausroll/material/material_parameters.h>
 #include <ausroll/mechanics/boundary_conditions.h>
@@ -32,6 +33,7 @@ namespace ausroll::scene
     mechanics::BoundaryConditionParameters boundary_conditions;    ///< `Boundary conditions`
     contact::ContactParameters             contact;                ///< `Contact`
     adaptivity::AdaptivityParameters       adaptivity;             ///< `Adaptivity`
+    io::CheckpointParameters               checkpoint;             ///< `Checkpoint`
     solver::LoadingParameters              loading;                ///< `Loading`
     solver::SolverParameters               solver;                 ///< `Solver`
     io::OutputParameters                   output;                 ///< `Output`

@@ -1,0 +1,70 @@
+/**
+ * @file checkpoint.h
+ * Checkpoint files: where they live, how they are replaced atomically, and their metadata.
+ */
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <map>
+#include <mpi.h>
+#include <string>
+#include <vector>
+
+namespace ausroll::io
+{
+  /** Parameters of subsection `Checkpoint`. */
+  struct CheckpointParameters
+  {
+    unsigned int interval = 0; ///< `Interval`: write a checkpoint every this many steps (0: never)
+    unsigned int abort_after_step = 0; ///< `Abort after step` (testing aid: hard exit after step N)
+
+    /** Declare subsection `Checkpoint`. */
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    /** Read subsection `Checkpoint`. */
+    void parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /**
+   * Scalars and vectors of a checkpoint (time, step, contact statuses, output records, ...)
+   * stored as text with 17 significant digits (exact for doubles), keyed by name.
+   */
+  struct CheckpointMetadata
+  {
+    std::map<std::string, std::vector<double>> values;  ///< numeric entries
+    std::map<std::string, std::string>         strings; ///< text entries (one line each)
+
+    /** Write to @p filename (call on one rank). */
+    void write(const std::string &filename) const;
+    /** Read from @p filename; throws RunFailure if missing or damaged. */
+    void read(const std::string &filename);
+    /** The single value @p key (RunFailure if missing). */
+    double get(const std::string &key) const;
+  };
+
+  /**
+   * The checkpoint directory of an output directory: `<output>/checkpoint/`. A new checkpoint is
+   * written into `<output>/checkpoint.new/` and then swapped in (old one renamed to
+   * `checkpoint.old/` and removed), so that a run killed at any moment leaves a complete
+   * checkpoint behind (either `checkpoint/` or, between the two renames, `checkpoint.old/`).
+   */
+  class CheckpointDirectory
+  {
+  public:
+    /** Checkpoints of the run writing into @p output_directory. */
+    CheckpointDirectory(const std::string &output_directory, const MPI_Comm comm);
+
+    /** Directory to write the next checkpoint into (created, emptied); collective. */
+    std::string begin_write() const;
+
+    /** Make the checkpoint written into begin_write()'s directory the current one; collective. */
+    void commit() const;
+
+    /** The directory of the latest complete checkpoint; RunFailure if there is none. */
+    std::string latest() const;
+
+  private:
+    std::string base;
+    MPI_Comm    comm;
+  };
+} // namespace ausroll::io
