@@ -5,7 +5,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 
-ausroll_install_missing
+ausroll_install_missing python3-vtk9
 ausroll_build
 
 cd "$BUILD_DIR"

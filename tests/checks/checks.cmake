@@ -142,3 +142,16 @@ ausroll_add_resume_check(NAME checkpoint_contact
   PRM ${CMAKE_CURRENT_BINARY_DIR}/block_slide_checkpoint.prm ABORT 7)
 ausroll_add_resume_check(NAME checkpoint_contact_np2
   PRM ${CMAKE_CURRENT_BINARY_DIR}/block_slide_checkpoint.prm ABORT 7 NP 2)
+
+# ---------------------------------------------------------------- ParaView / VTK
+configure_file(${AUSROLL_CHECKS_DIR}/scenes/block_press_vtu.prm.in ${CMAKE_CURRENT_BINARY_DIR}/block_press_vtu.prm @ONLY)
+# solution.pvd and the .pvtu/.vtu files open with VTK's readers, carry the documented fields, and
+# hold the exact uniform state of the pressed block: sigma_yy = -E/(1-nu^2) * 0.002 = -461.538 MPa
+# in every cell (1e-6: float32 output), u_y between -0.010 mm (top) and 0 (base).
+# Skipped (exit 77) when python3-vtk9 is not installed; scripts/test.sh installs it.
+ausroll_add_check(NAME paraview_vtu_block_press
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/block_press_vtu.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_vtu.py
+  ARGS out --expect-cell stress_yy -461.5384615 1e-6 --expect-cell stress_xx 0 1e30
+       --expect-point-range displacement 1 -0.0100001 1e-9)
+set_tests_properties(check/paraview_vtu_block_press PROPERTIES SKIP_REGULAR_EXPRESSION "SKIPPED: VTK")
