@@ -11,6 +11,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <sstream>
 
 namespace ausroll::contact
 {
@@ -666,6 +667,55 @@ namespace ausroll::contact
         distance = std::min(distance, std::abs(p.gap));
     }
     return distance;
+  }
+
+  template <int dim>
+  void ContactOperator<dim>::check_dies(const std::vector<double> &times,
+                                        const double               workpiece_size) const
+  {
+    for (unsigned int k = 0; k < dies.size(); ++k)
+    {
+      const std::string path = "Contact/Die " + std::to_string(k) + " (" + dies[k]->name + ")";
+      unsigned int      n_candidates = 0;
+      double            deepest = infinity, nearest = infinity;
+      Point<2>          deepest_node;
+      for (const Node &n : nodes)
+        if (n.owned && std::find(n.dies.begin(), n.dies.end(), k) != n.dies.end())
+        {
+          ++n_candidates;
+          const Projection p0
+              = dies[k]->die_surface().project(dies[k]->pose(times.front()).to_local(to_2d(n.X)));
+          if (p0.gap < deepest)
+          {
+            deepest      = p0.gap;
+            deepest_node = to_2d(n.X);
+          }
+          for (const double t : times)
+          {
+            const Projection p
+                = dies[k]->die_surface().project(dies[k]->pose(t).to_local(to_2d(n.X)));
+            nearest = std::min(nearest, p.gap);
+          }
+        }
+      if (Utilities::MPI::sum(n_candidates, comm) == 0)
+        throw InputError(path + "/Candidate boundaries: no workpiece boundary node carries these ids");
+      const double global_deepest = Utilities::MPI::min(deepest, comm);
+      if (global_deepest < -0.05 * workpiece_size)
+      {
+        std::ostringstream msg;
+        msg << path << ": the undeformed workpiece starts " << -global_deepest
+            << " mm inside the die; check its Normal / Material inside / position and Motion";
+        throw InputError(msg.str());
+      }
+      if (Utilities::MPI::min(nearest, comm) > 0.25 * workpiece_size)
+      {
+        std::ostringstream msg;
+        msg << path << " never comes within " << 0.25 * workpiece_size
+            << " mm of the workpiece during the run; check its position and Motion";
+        throw InputError(msg.str());
+      }
+      (void)deepest_node;
+    }
   }
 
   template class ContactOperator<2>;

@@ -4,6 +4,7 @@
 Each file states what it expects in its first lines:
     # expect: <text that must appear in the error message>
     # exit: <status>            (optional, default 2 = input error)
+    # args: <extra arguments>   (optional, e.g. --resume)
 A case passes if ausroll exits with that status, prints the expected text on stderr, does not
 crash (no signal, no "internal error") and leaves no solution.pvd behind.
 """
@@ -16,14 +17,16 @@ import tempfile
 
 
 def expectations(path):
-    expect, status = None, 2
+    expect, status, args = None, 2, []
     with open(path) as f:
         for line in f:
             if line.startswith("# expect:"):
                 expect = line.split(":", 1)[1].strip()
             elif line.startswith("# exit:"):
                 status = int(line.split(":", 1)[1])
-    return expect, status
+            elif line.startswith("# args:"):
+                args = line.split(":", 1)[1].split()
+    return expect, status, args
 
 
 def main():
@@ -35,7 +38,7 @@ def main():
     failures = 0
     for name in cases:
         path = os.path.join(directory, name)
-        expect, status = expectations(path)
+        expect, status, args = expectations(path)
         if expect is None:
             print(f"{name}: no '# expect:' line")
             failures += 1
@@ -44,7 +47,7 @@ def main():
         try:
             # files the case refers to (e.g. meshes) are resolved relative to the .prm file
             shutil.copy(path, work)
-            run = subprocess.run([ausroll, os.path.join(work, name)], cwd=work,
+            run = subprocess.run([ausroll, os.path.join(work, name)] + args, cwd=work,
                                  capture_output=True, text=True, timeout=120)
             leftovers = [os.path.join(r, f) for r, _, fs in os.walk(work) for f in fs
                          if f == "solution.pvd"]

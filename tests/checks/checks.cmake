@@ -155,3 +155,16 @@ ausroll_add_check(NAME paraview_vtu_block_press
   ARGS out --expect-cell stress_yy -461.5384615 1e-6 --expect-cell stress_xx 0 1e30
        --expect-point-range displacement 1 -0.0100001 1e-9)
 set_tests_properties(check/paraview_vtu_block_press PROPERTIES SKIP_REGULAR_EXPRESSION "SKIPPED: VTK")
+
+# ---------------------------------------------------------------- robust stepping
+configure_file(${AUSROLL_CHECKS_DIR}/scenes/thick_cylinder_collapse.prm.in ${CMAKE_CURRENT_BINARY_DIR}/thick_cylinder_collapse.prm @ONLY)
+# Beyond the collapse pressure (192.09 MPa) no step converges: cut back 3 times, stop with exit 3
+# and a message naming the step; history and solution.pvd stay valid with converged states only.
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/robust_stepping_collapse)
+add_test(NAME check/robust_stepping_collapse
+  COMMAND ${CMAKE_COMMAND} -DRUN=$<TARGET_FILE:ausroll> -DPRM=${CMAKE_CURRENT_BINARY_DIR}/thick_cylinder_collapse.prm
+    "-DCHECK=${Python3_EXECUTABLE};${AUSROLL_CHECKS_DIR}/check_failure.py"
+    "-DARGS=out;--expect-status;3;--expect-message;did not converge after 3 cutbacks;--max-column;pressure_0;192.09"
+    -P ${AUSROLL_CHECKS_DIR}/run_failure_check.cmake
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/robust_stepping_collapse)
+set_tests_properties(check/robust_stepping_collapse PROPERTIES LABELS check TIMEOUT 600)

@@ -94,6 +94,15 @@ namespace ausroll::contact
      */
     void unpack_state(const std::vector<double> &state);
 
+    /**
+     * Plausibility of the dies before a run (call after setup()): throws InputError naming the die
+     * if it has no candidate nodes, if the undeformed workpiece starts deep inside it (more than
+     * 5 % of the workpiece size: usually a flipped Normal or Material inside), or if it never comes
+     * within a quarter of the workpiece size of the undeformed workpiece at any of @p times.
+     * @p workpiece_size is the diameter of the workpiece's bounding box.
+     */
+    void check_dies(const std::vector<double> &times, const double workpiece_size) const;
+
     /** Distance from @p x to the nearest die (|gap|) at time @p t (infinite if none in range). */
     double distance_to_dies(const dealii::Point<dim> &x, const double t) const;
 
