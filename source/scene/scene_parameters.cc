@@ -20,7 +20,6 @@ namespace ausroll::scene
     material::MaterialParameters::declare_parameters(prm);
     mechanics::BoundaryConditionParameters::declare_parameters(prm);
     contact::ContactParameters::declare_parameters(prm);
-    contact::ContactParameters::declare_parameters(prm);
     solver::LoadingParameters::declare_parameters(prm);
     solver::SolverParameters::declare_parameters(prm);
     io::OutputParameters::declare_parameters(prm);
@@ -34,7 +33,6 @@ namespace ausroll::scene
     model.parse_parameters(prm);
     material.parse_parameters(prm);
     boundary_conditions.parse_parameters(prm);
-    contact.parse_parameters(prm, input_directory);
     contact.parse_parameters(prm, input_directory);
     loading.parse_parameters(prm);
     solver.parse_parameters(prm);
