@@ -15,7 +15,8 @@ namespace ausroll::mechanics
         "Kinematic description: 'small strain' (infinitesimal), 'total Lagrangian' "
         "(Green-Lagrange strain / 2nd Piola-Kirchhoff stress), 'updated Lagrangian' "
         "(hypoelastic-plastic with Jaumann rate, as NOFEAP), 'finite strain' "
-        "(multiplicative J2 plasticity with logarithmic elastic strain).");
+        "(multiplicative J2 plasticity with logarithmic elastic strain). "
+        "With any kinematics but small strain, pressure loads follow the deformed surface.");
     prm.declare_entry("Planar model",
                       "plane strain",
                       Patterns::Selection("plane strain|plane stress|axisymmetric"),
@@ -33,6 +34,15 @@ namespace ausroll::mechanics
                       "0",
                       Patterns::Integer(0, 6),
                       "Gauss points per direction; 0 means degree + 1.");
+    prm.declare_entry(
+        "Volumetric locking treatment",
+        "none",
+        Patterns::Selection("none|F-bar"),
+        "none: standard displacement element; F-bar: the volume change at every Gauss point is "
+        "replaced by the one at the cell centre, F_bar = (J0/J)^(1/n) F with n = 3 "
+        "(axisymmetric) or n = 2 applied to the in-plane part (plane strain/stress); for small "
+        "strain this is the mean-dilatation B-bar. Cures the locking of Q1 in plastic flow; "
+        "consistent, non-symmetric tangent.");
     prm.leave_subsection();
   }
 
@@ -47,6 +57,9 @@ namespace ausroll::mechanics
     thickness = prm.get_double("Thickness");
     degree = prm.get_integer("Polynomial degree");
     quadrature_points = prm.get_integer("Quadrature points");
+    volumetric_locking = prm.get("Volumetric locking treatment") == "F-bar"
+                             ? VolumetricLocking::f_bar
+                             : VolumetricLocking::none;
     prm.leave_subsection();
     require(thickness > 0., "Model/Thickness", "must be positive");
     if (quadrature_points == 0)

@@ -71,8 +71,13 @@ namespace ausroll::scene
   {
     TimerOutput::Scope scope(timer, "setup");
     geometry::create_workpiece(parameters.geometry, triangulation);
-    assembler = std::make_unique<mechanics::Assembler<dim>>(
-        mapping, fe, parameters.model.quadrature_points, kinematics, *model, boundary_conditions);
+    assembler = std::make_unique<mechanics::Assembler<dim>>(mapping,
+                                                            fe,
+                                                            parameters.model.quadrature_points,
+                                                            kinematics,
+                                                            *model,
+                                                            boundary_conditions,
+                                                            parameters.model.volumetric_locking);
     setup_system();
     setup_postprocessing();
 
@@ -559,7 +564,10 @@ namespace ausroll::scene
         << " MPI rank" << (Utilities::MPI::n_mpi_processes(comm) > 1 ? "s" : "") << ")\n"
         << "  mesh: " << triangulation.n_global_active_cells() << " cells, " << dof_handler.n_dofs()
         << " DoFs (FE_Q(" << parameters.model.degree << ") x " << dim << ")\n"
-        << "  kinematics: " << material::to_string(parameters.model.kinematics) << "\n"
+        << "  kinematics: " << material::to_string(parameters.model.kinematics)
+        << (parameters.model.volumetric_locking == mechanics::VolumetricLocking::f_bar ? ", F-bar"
+                                                                                       : "")
+        << "\n"
         << "  output: " << parameters.output.directory << "/" << std::endl;
     regression_log << "scene: " << parameters.name
                    << "\ncells: " << triangulation.n_global_active_cells()

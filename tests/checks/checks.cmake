@@ -35,3 +35,26 @@ add_test(NAME check/bad_input
           $<TARGET_FILE:ausroll> ${AUSROLL_CHECKS_DIR}/bad_input
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties(check/bad_input PROPERTIES LABELS check TIMEOUT 600)
+
+# Follower pressure (finite strain): plane-strain thick ring A = 100, B = 200, Hencky elastic,
+# E = 1000 MPa, internal pressure 0..100 MPa on the deformed surface (u(A) = 29 %): u(A) and u(B)
+# within 0.1 % of the independent 1D shooting solution (benchmarks/reference/
+# thick_shell_hencky.py); the scene reaches 6e-6. (A dead load of the same nominal pressure gives
+# u(A) = 21.6 mm instead of 29.2 mm.)
+ausroll_add_check(NAME thick_ring_follower_pressure
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/thick_ring_follower.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/compare_curves.py
+  ARGS --result out/history.csv
+       --reference ${AUSROLL_CHECKS_DIR}/reference/thick_ring_hencky.csv
+       --x-result pressure_0 --y-result inner_ux --x-reference pressure --y-reference u_inner
+       --rel-tol 0.001 --x-min 1)
+
+# Follower pressure, axisymmetric (hoop stretch in the deformed area): thick sphere A = 100,
+# B = 200, 0..200 MPa (u(A) = 25 %): u(A) within 0.1 % of the 1D solution (scene: 5e-6).
+ausroll_add_check(NAME thick_sphere_follower_pressure
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/thick_sphere_follower.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/compare_curves.py
+  ARGS --result out/history.csv
+       --reference ${AUSROLL_CHECKS_DIR}/reference/thick_sphere_hencky.csv
+       --x-result pressure_0 --y-result inner_ux --x-reference pressure --y-reference u_inner
+       --rel-tol 0.001 --x-min 1)
