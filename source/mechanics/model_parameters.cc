@@ -10,12 +10,13 @@ namespace ausroll::mechanics
     prm.enter_subsection("Model");
     prm.declare_entry(
         "Kinematics",
-        "small strain",
+        "finite strain",
         Patterns::Selection("small strain|total Lagrangian|updated Lagrangian|finite strain"),
         "Kinematic description: 'small strain' (infinitesimal), 'total Lagrangian' "
         "(Green-Lagrange strain / 2nd Piola-Kirchhoff stress), 'updated Lagrangian' "
         "(hypoelastic-plastic with Jaumann rate, as NOFEAP), 'finite strain' "
-        "(multiplicative J2 plasticity with logarithmic elastic strain). "
+        "(multiplicative J2 plasticity with logarithmic elastic strain; the default: forming "
+        "processes). "
         "With any kinematics but small strain, pressure loads follow the deformed surface.");
     prm.declare_entry("Planar model",
                       "plane strain",

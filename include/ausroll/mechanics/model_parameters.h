@@ -34,7 +34,7 @@ namespace ausroll::mechanics
    */
   struct ModelParameters
   {
-    material::KinematicsType kinematics = material::KinematicsType::small_strain; ///< `Kinematics`
+    material::KinematicsType kinematics = material::KinematicsType::finite_strain; ///< `Kinematics`
     PlanarModel              planar_model = PlanarModel::plane_strain; ///< `Planar model`
     double                   thickness = 1.; ///< `Thickness` of plane models (forces scale with it)
     unsigned int             degree = 2;     ///< `Polynomial degree` of the displacement FE_Q
