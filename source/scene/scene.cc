@@ -116,6 +116,7 @@ namespace ausroll::scene
 
     for (auto *v : {&solution,
                     &step_start,
+                    &previous_start,
                     &newton_start,
                     &increment,
                     &rhs,
@@ -310,6 +311,12 @@ namespace ausroll::scene
   }
 
   template <int dim>
+  double Scene<dim>::increment_residual_product() const
+  {
+    return increment * free_residual;
+  }
+
+  template <int dim>
   solver::LinearSolveInfo Scene<dim>::solve_for_increment()
   {
     TimerOutput::Scope scope(timer, "linear solve");
@@ -335,6 +342,7 @@ namespace ausroll::scene
       if (cell->is_locally_owned())
         for (const auto &point : material_points.get_data(cell))
           point->commit();
+    previous_start = step_start;
     step_start = solution;
     contact.commit();
   }
@@ -494,6 +502,13 @@ namespace ausroll::scene
     {
       time = t_start + dt;
       solution = step_start;
+      if (loading.predictor == solver::Predictor::linear_extrapolation && last_step_size > 0.)
+      {
+        // u_n + (dt / dt_prev) (u_n - u_n-1)
+        const double ratio = dt / last_step_size;
+        solution.add(ratio, step_start);
+        solution.add(-ratio, previous_start);
+      }
       solution_ghosted = solution;
       newton_log << "  step " << step_number + 1 << ", t = " << time << std::endl;
       result = newton.solve(*this, newton_log);
@@ -605,6 +620,7 @@ namespace ausroll::scene
       dt_try = time - t_start;
 
       commit_step();
+      last_step_size = dt_try;
       ++step_number;
       t_done = time;
       const io::HistoryRow row = history_row(result, cutbacks);
