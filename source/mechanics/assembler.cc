@@ -46,6 +46,9 @@ namespace ausroll::mechanics
 
     const bool small_strain = model.is_small_strain();
     const bool f_bar = locking == VolumetricLocking::f_bar;
+    // J0: value at the cell centre for Q1 (de Souza Neto), cell average for higher degrees (a
+    // single centre value leaves volumetric modes of Q2 unconstrained: too soft)
+    const bool cell_average = fe.degree > 1;
     const bool follower = !small_strain; // pressure on the deformed surface
 
     FEValues<dim>     fe_values(mapping,
@@ -151,8 +154,9 @@ namespace ausroll::mechanics
       // tr(F0 - I) and tr G0_j)
       double       J0 = 1., trace_H0 = 0.;
       Tensor<2, 3> F0_inv;
-      if (f_bar)
+      if (f_bar && !cell_average)
       {
+        // Q1: the deformation gradient at the cell centre
         fe_center.reinit(cell);
         fe_center[displacement].get_function_gradients(solution, grad_u_center);
         fe_center[displacement].get_function_values(solution, u_center);
@@ -185,6 +189,55 @@ namespace ausroll::mechanics
               l += F0_inv[J][c] * grad[J];
             dlnJ0[j] = l;
           }
+        }
+      }
+      else if (f_bar)
+      {
+        // Q2 and higher: volume average over the cell (mean dilatation), J0 = int J dV / V
+        // (small strain: the average of tr(F - I)); d ln J0 / du_j = int J tr(F^-1 G_j) dV / (V J0)
+        double volume = 0.;
+        J0 = 0.;
+        std::fill(dlnJ0.begin(), dlnJ0.end(), 0.);
+        for (unsigned int q = 0; q < n_q; ++q)
+        {
+          const Point<dim>  &X = fe_values.quadrature_point(q);
+          const double       dV = fe_values.JxW(q) * kinematics.volume_factor(X);
+          const Tensor<2, 3> F = kinematics.deformation_gradient(grad_u[q], u_values[q], X);
+          const double       J = determinant(F);
+          const double       weight = small_strain ? dV : J * dV;
+          const Tensor<2, 3> F_inv = small_strain ? Tensor<2, 3>() : invert(F);
+          volume += dV;
+          J0 += J * dV;
+          trace_H0 += (trace(F) - 3.) * dV;
+          for (unsigned int j = 0; j < n_dofs; ++j)
+          {
+            const unsigned int   c = component[j];
+            const Tensor<1, dim> grad = fe_values.shape_grad_component(j, q, c);
+            const double         hoop_j
+                = (axisymmetric && c == 0) ? fe_values.shape_value_component(j, q, c) / X[0] : 0.;
+            double l = 0.;
+            if (small_strain)
+              l = grad[c] + hoop_j;
+            else
+            {
+              l = F_inv[2][2] * hoop_j;
+              for (unsigned int J = 0; J < dim; ++J)
+                l += F_inv[J][c] * grad[J];
+            }
+            dlnJ0[j] += weight * l;
+          }
+        }
+        J0 /= volume;
+        trace_H0 /= volume;
+        for (unsigned int j = 0; j < n_dofs; ++j)
+          dlnJ0[j] /= small_strain ? volume : volume * J0;
+        if (check_inversion && !(J0 > 0.))
+        {
+          std::ostringstream msg;
+          msg << "inverted element (mean det F = " << J0 << " in the cell at " << cell->center()
+              << ")";
+          fail(msg.str());
+          continue;
         }
       }
 

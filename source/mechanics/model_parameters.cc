@@ -40,7 +40,8 @@ namespace ausroll::mechanics
         "none",
         Patterns::Selection("none|F-bar"),
         "none: standard displacement element; F-bar: the volume change at every Gauss point is "
-        "replaced by the one at the cell centre, F_bar = (J0/J)^(1/n) F with n = 3 "
+        "replaced by the one at the cell centre (Q1) or by the cell average (Q2 and higher), "
+        "F_bar = (J0/J)^(1/n) F with n = 3 "
         "(axisymmetric) or n = 2 applied to the in-plane part (plane strain/stress); for small "
         "strain this is the mean-dilatation B-bar. Cures the locking of Q1 in plastic flow; "
         "consistent, non-symmetric tangent.");
@@ -65,5 +66,9 @@ namespace ausroll::mechanics
     require(thickness > 0., "Model/Thickness", "must be positive");
     if (quadrature_points == 0)
       quadrature_points = degree + 1;
+    require(volumetric_locking == VolumetricLocking::none || quadrature_points > 1,
+            "Model/Volumetric locking treatment",
+            "F-bar needs at least 2 quadrature points per direction (Model/Quadrature points); "
+            "with one point the volume change is constant per cell already");
   }
 } // namespace ausroll::mechanics

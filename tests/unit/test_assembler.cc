@@ -176,12 +176,14 @@ TEST(Assembler, TangentMatchesFiniteDifferencesOfResidual)
     for (const M m : {M::plane_strain, M::axisymmetric})
       for (const L l : {L::none, L::f_bar})
         cases.push_back({k, m, l, 1, true});
-  // Q2 with F-bar, elastic and plastic; the follower pressure alone (no F-bar, elastic)
+  // Q2 with F-bar (cell-average J0), elastic and plastic; the follower pressure alone (no F-bar,
+  // elastic)
   for (const M m : {M::plane_strain, M::axisymmetric})
   {
     cases.push_back({K::finite_strain, m, L::f_bar, 2, true});
     cases.push_back({K::finite_strain, m, L::none, 2, false});
     cases.push_back({K::updated_lagrangian, m, L::f_bar, 2, false});
+    cases.push_back({K::small_strain, m, L::f_bar, 2, true});
   }
   for (const Case &c : cases)
   {

@@ -72,13 +72,17 @@ namespace ausroll::mechanics
    *
    * Volumetric locking (`Model/Volumetric locking treatment = F-bar`, de Souza Neto, Peric,
    * Dutko and Owen 1996): the material points see F_bar = s F with s = (J0 / J)^(1/n), J = det F
-   * at the point and J0 = det F at the centre of the cell, n = PlanarKinematics::
+   * at the point and J0 = det F at the centre of the cell for Q1 (for Q2 and higher the volume
+   * average of det F over the cell, the mean dilatation: one centre value leaves the volumetric
+   * modes of Q2 that vanish at the centre free, and a flat-punch limit load came out 7 % low),
+   * n = PlanarKinematics::
    * volumetric_dimensions() (n = 2 scales only the in-plane block of F, so F_bar_zz = 1 stays
    * plane strain; n = 3 scales the whole F, hoop stretch included). The internal force is the
    * spatial virtual work of sigma(F_bar) on the current configuration, int sigma_bar : grad_x dv =
    * int (J s / J0) P(F_bar) : Grad dV. The exact tangent has the extra non-symmetric term of the
    * cell-centre gradient. For small strain the same construction with
-   * F_bar = F + (tr(F0 - I) - tr(F - I)) / n I_n is the mean-dilatation B-bar (centre value).
+   * F_bar = F + (tr(F0 - I) - tr(F - I)) / n I_n is the B-bar method (tr(F0 - I) at the centre
+   * for Q1, averaged over the cell for higher degrees).
    */
   template <int dim>
   class Assembler
