@@ -58,3 +58,25 @@ ausroll_add_check(NAME thick_sphere_follower_pressure
        --reference ${AUSROLL_CHECKS_DIR}/reference/thick_sphere_hencky.csv
        --x-result pressure_0 --y-result inner_ux --x-reference pressure --y-reference u_inner
        --rel-tol 0.001 --x-min 1)
+
+# Scene checks that run several variants of a shipped scene (a Python driver calls ausroll).
+# ausroll_add_script_check(NAME <name> SCRIPT <script.py>): python3 SCRIPT AUSROLL SOURCE_DIR.
+function(ausroll_add_script_check)
+  cmake_parse_arguments(C "" "NAME;SCRIPT" "" ${ARGN})
+  set(_dir ${CMAKE_CURRENT_BINARY_DIR}/${C_NAME})
+  file(MAKE_DIRECTORY ${_dir})
+  add_test(NAME check/${C_NAME}
+    COMMAND ${Python3_EXECUTABLE} ${C_SCRIPT} $<TARGET_FILE:ausroll> ${CMAKE_SOURCE_DIR}
+    WORKING_DIRECTORY ${_dir})
+  set_tests_properties(check/${C_NAME} PROPERTIES LABELS check TIMEOUT 900)
+endfunction()
+
+# Volumetric locking (prm/flat_punch.prm, rough flat punch, plane strain, small strain): Q1 F-bar
+# limit pressure within 3 % of Prandtl's (2 + pi) k (measured +1.7 %), Q1 with full integration
+# locks (+13.6 % at the end and still rising). About 15 s.
+ausroll_add_script_check(NAME flat_punch_locking SCRIPT ${AUSROLL_CHECKS_DIR}/check_flat_punch.py)
+
+# Cantilever (prm/cantilever.prm): total vs updated Lagrangian, elastica and Reissner beam
+# references, 5 vs 100 increments, full roll-up by a follower end couple. About 25 s.
+ausroll_add_script_check(NAME cantilever_large_deflection
+  SCRIPT ${AUSROLL_CHECKS_DIR}/check_cantilever.py)
