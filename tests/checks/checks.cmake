@@ -80,3 +80,8 @@ ausroll_add_script_check(NAME flat_punch_locking SCRIPT ${AUSROLL_CHECKS_DIR}/ch
 # references, 5 vs 100 increments, full roll-up by a follower end couple. About 25 s.
 ausroll_add_script_check(NAME cantilever_large_deflection
   SCRIPT ${AUSROLL_CHECKS_DIR}/check_cantilever.py)
+
+# Upsetting (prm/upsetting.prm, coarse: Q2 8x6, 0.5 % and 1 % steps): step-size independence
+# outside fold-over events (0.5 %), force and bulge at 30 % vs the Q2 16x12 reference (2 %, 1 %),
+# small strain underestimates the load (> 20 %). About 25 s.
+ausroll_add_script_check(NAME upsetting SCRIPT ${AUSROLL_CHECKS_DIR}/check_upsetting.py)
