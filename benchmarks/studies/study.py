@@ -43,7 +43,7 @@ def run(args, base, name, overrides):
                    check=True)
     # files named relative to the .prm (meshes) are looked up next to it
     for f in os.listdir(prm_dir):
-        if f.endswith(".msh") and not os.path.exists(os.path.join(args.work, f)):
+        if f.endswith(".msh"):
             shutil.copy(os.path.join(prm_dir, f), args.work)
     start = time.time()
     result = subprocess.run([args.ausroll, prm], capture_output=True, text=True)
