@@ -99,6 +99,17 @@ namespace ausroll::solver
           problem.apply_increment(step);
           admissible = problem.assemble(true, message);
         }
+      else if (parameters.line_search)
+        // New constraints (moved dies, prescribed displacements): the residual may rise, but an
+        // inadmissible state (inverted element, failed return map) is never accepted; shorten
+        // the step instead of giving the whole load step up. The constraints not yet met are
+        // imposed again by the next iteration.
+        for (unsigned int ls = 0; ls < 6 && !admissible; ++ls)
+        {
+          step *= 0.5;
+          problem.apply_increment(step);
+          admissible = problem.assemble(true, message);
+        }
       if (step < 1.)
         log << "    line search: step length " << step << std::endl;
       if (!admissible)

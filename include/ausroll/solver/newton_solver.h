@@ -78,7 +78,9 @@ namespace ausroll::solver
    * d . r(0) < 0. The second criterion lets Newton take the full step where the residual norm
    * rises temporarily although the step is good, as in slender structures whose first iterate
    * carries large spurious membrane forces (the cantilever: the residual grows by 60 after the
-   * first iteration, the next iteration converges).
+   * first iteration, the next iteration converges). While the constraints are not yet satisfied
+   * (the first iteration of a step with moved dies or prescribed displacements) the residual may
+   * rise and only inadmissible states (inverted elements, failed material updates) are backtracked.
    */
   class NewtonSolver
   {
