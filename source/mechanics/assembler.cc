@@ -116,9 +116,16 @@ namespace ausroll::mechanics
     std::vector<double> dlnJ0(n_dofs), dlnJ(n_dofs), q_coefficient(n_dofs);
 
     // n of the F-bar scaling and the in-plane/volumetric projection E (I_n)
-    const unsigned int n_vol = kinematics.volumetric_dimensions();
-    const double       alpha = 1. / n_vol;
-    Tensor<2, 3>       E;
+    // Q2 and higher in plane strain: isotropic scaling of the whole F (n = 3, F_bar_zz = s, as the
+    // B-bar of Hughes with eps_bar_zz = (theta_0 - theta) / 3); the in-plane scaling leaks the
+    // volume correction into the 3D deviatoric strain and made Q2 too soft (flat punch: 0.928
+    // p_lim instead of 0.998)
+    const unsigned int n_vol
+        = (cell_average && dim == 2 && kinematics.planar_model() == PlanarModel::plane_strain)
+              ? 3
+              : kinematics.volumetric_dimensions();
+    const double alpha = 1. / n_vol;
+    Tensor<2, 3> E;
     for (unsigned int d = 0; d < n_vol; ++d)
       E[d][d] = 1.;
 

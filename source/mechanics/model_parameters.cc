@@ -41,10 +41,10 @@ namespace ausroll::mechanics
         Patterns::Selection("none|F-bar"),
         "none: standard displacement element; F-bar: the volume change at every Gauss point is "
         "replaced by the one at the cell centre (Q1) or by the cell average (Q2 and higher), "
-        "F_bar = (J0/J)^(1/n) F with n = 3 "
-        "(axisymmetric) or n = 2 applied to the in-plane part (plane strain/stress); for small "
-        "strain this is the mean-dilatation B-bar. Cures the locking of Q1 in plastic flow; "
-        "consistent, non-symmetric tangent.");
+        "F_bar = (J0/J)^(1/n) F with n = 3 on the whole F (axisymmetric; plane strain with Q2 "
+        "and higher) or n = 2 on the in-plane part (plane strain with Q1, plane stress); for "
+        "small strain this is B-bar. Cures the locking of Q1 in plastic flow; consistent, "
+        "non-symmetric tangent.");
     prm.leave_subsection();
   }
 

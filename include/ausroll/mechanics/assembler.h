@@ -77,12 +77,16 @@ namespace ausroll::mechanics
    * modes of Q2 that vanish at the centre free, and a flat-punch limit load came out 7 % low),
    * n = PlanarKinematics::
    * volumetric_dimensions() (n = 2 scales only the in-plane block of F, so F_bar_zz = 1 stays
-   * plane strain; n = 3 scales the whole F, hoop stretch included). The internal force is the
-   * spatial virtual work of sigma(F_bar) on the current configuration, int sigma_bar : grad_x dv =
-   * int (J s / J0) P(F_bar) : Grad dV. The exact tangent has the extra non-symmetric term of the
-   * cell-centre gradient. For small strain the same construction with
-   * F_bar = F + (tr(F0 - I) - tr(F - I)) / n I_n is the B-bar method (tr(F0 - I) at the centre
-   * for Q1, averaged over the cell for higher degrees).
+   * plane strain; n = 3 scales the whole F, hoop stretch included). Exception: Q2 and higher in
+   * plane strain use n = 3 on the whole F (F_bar_zz = s, like Hughes' B-bar with eps_bar_zz =
+   * (theta_0 - theta) / 3): with the in-plane scaling the volume correction changes the 3D
+   * deviatoric strain, and Q2 came out 7 % too soft in the Prandtl punch (0.928 p_lim; isotropic:
+   * 0.998). Plane stress always uses n = 2 (F_zz comes from sigma_zz = 0). The internal force is
+   * the spatial virtual work of sigma(F_bar) on the current configuration, int sigma_bar : grad_x
+   * dv = int (J s / J0) P(F_bar) : Grad dV. The exact tangent has the extra non-symmetric term of
+   * the cell-centre gradient. For small strain the same construction with F_bar = F + (tr(F0 - I) -
+   * tr(F - I)) / n I_n is the B-bar method (tr(F0 - I) at the centre for Q1, averaged over the cell
+   * for higher degrees).
    */
   template <int dim>
   class Assembler

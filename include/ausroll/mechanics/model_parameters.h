@@ -38,9 +38,9 @@ namespace ausroll::mechanics
     PlanarModel              planar_model = PlanarModel::plane_strain; ///< `Planar model`
     double                   thickness = 1.; ///< `Thickness` of plane models (forces scale with it)
     unsigned int             degree = 2;     ///< `Polynomial degree` of the displacement FE_Q
-    unsigned int      quadrature_points = 0; ///< `Quadrature points` per direction (0: degree+1)
-    VolumetricLocking volumetric_locking = VolumetricLocking::none; ///< `Volumetric locking
-                                                                    ///< treatment`
+    unsigned int quadrature_points = 0;      ///< `Quadrature points` per direction (0: degree+1)
+    /** `Volumetric locking treatment` */
+    VolumetricLocking volumetric_locking = VolumetricLocking::none;
 
     /** Declare subsection `Model`. */
     static void declare_parameters(dealii::ParameterHandler &prm);
