@@ -68,7 +68,9 @@ namespace ausroll::mechanics
    * (follower load): the nominal traction is t0 = -p J F^-T N, computed from the deformed tangent
    * of the face, a = F T (T the reference unit tangent): t0 dA = -p (a_y, -a_x) dL, times the hoop
    * stretch r / R in axisymmetric models (the deformed area element is 2 pi r dl). Its derivative
-   * (the load stiffness, non-symmetric) enters the tangent, so Newton stays quadratic.
+   * (the load stiffness, non-symmetric) enters the tangent, so Newton stays quadratic. Plane
+   * stress: the change of thickness is not included (force per deformed length and reference
+   * thickness; the thickness stretch lives at the material points, not on the faces).
    *
    * Volumetric locking (`Model/Volumetric locking treatment = F-bar`, de Souza Neto, Peric,
    * Dutko and Owen 1996): the material points see F_bar = s F with s = (J0 / J)^(1/n), J = det F
