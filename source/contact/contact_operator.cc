@@ -121,6 +121,7 @@ namespace ausroll::contact
         partial[n.dofs[0]] = n.area;
     comm = dof_handler.get_communicator();
     const auto gathered = Utilities::MPI::all_gather(comm, partial);
+    double     largest_area = 0.;
     for (Node &n : nodes)
     {
       n.area = 0.;
@@ -130,7 +131,11 @@ namespace ausroll::contact
         if (it != part.end())
           n.area += it->second;
       }
+      largest_area = std::max(largest_area, n.area);
     }
+    // Nodes on the axis of an axisymmetric model carry no area (2 pi r = 0; exactly 0 for the
+    // vertex of a quadratic face): report no pressure there instead of round-off / 0.
+    area_floor = 1e-10 * Utilities::MPI::max(largest_area, comm);
   }
 
   template <int dim>
@@ -522,18 +527,19 @@ namespace ausroll::contact
     std::vector<std::vector<double>> rows;
     for (const Node &n : nodes)
       if (n.owned && n.die >= 0 && n.projection.valid)
-        rows.push_back({double(n.die),
-                        n.projection.s,
-                        n.X[0],
-                        n.X[1],
-                        n.x[0],
-                        n.x[1],
-                        n.projection.gap,
-                        n.area > 0. ? n.Rn / n.area : 0.,
-                        n.area > 0. ? (contact_force(n) * n.projection.tangent) / n.area : 0.,
-                        n.Rn,
-                        contact_force(n) * n.projection.tangent,
-                        double(static_cast<int>(n.status))});
+        rows.push_back(
+            {double(n.die),
+             n.projection.s,
+             n.X[0],
+             n.X[1],
+             n.x[0],
+             n.x[1],
+             n.projection.gap,
+             n.area > area_floor ? n.Rn / n.area : 0.,
+             n.area > area_floor ? (contact_force(n) * n.projection.tangent) / n.area : 0.,
+             n.Rn,
+             contact_force(n) * n.projection.tangent,
+             double(static_cast<int>(n.status))});
     const auto gathered = Utilities::MPI::gather(comm, rows, 0);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
@@ -564,7 +570,7 @@ namespace ausroll::contact
     for (const Node &n : nodes)
       if (n.owned && n.projection.valid)
       {
-        if (n.area > 0.)
+        if (n.area > area_floor)
         {
           pressure_traction[n.dofs[0]] = n.status == ContactStatus::open ? 0. : n.Rn / n.area;
           pressure_traction[n.dofs[1]] = n.status == ContactStatus::open

@@ -28,9 +28,14 @@ namespace ausroll::material
     const Tensor<2, 3> M = dealii::invert(I - 0.5 * dW);
     const Tensor<2, 3> Q = M * (I + 0.5 * dW);
 
+    // half-step rotation (Cayley transform of Delta W / 4): the elastic stress increment is
+    // rotated to the end of the step from the middle of the step, where Delta eps is evaluated
+    const Tensor<2, 3> M_half = dealii::invert(I - 0.25 * dW);
+    const Tensor<2, 3> Q_half = M_half * (I + 0.25 * dW);
+
     const SymmetricTensor<2, 3> d_eps = dealii::symmetrize(dL);
-    const SymmetricTensor<2, 3> trial_stress
-        = rotate(Q, old.stress) + stress_return->elasticity().stress(d_eps);
+    const SymmetricTensor<2, 3> d_stress = stress_return->elasticity().stress(d_eps);
+    const SymmetricTensor<2, 3> trial_stress = rotate(Q, old.stress) + rotate(Q_half, d_stress);
     const SymmetricTensor<2, 3> trial_back_stress = rotate(Q, old.back_stress);
     const ReturnMappingResult   r
         = stress_return->return_map(trial_stress, trial_back_stress, old.equivalent_plastic_strain);
@@ -61,6 +66,10 @@ namespace ausroll::material
     const Tensor<2, 3>         Q_plus_I = Q + I;
     const Tensor<2, 3>         Vt_stress
         = dealii::transpose(Q_plus_I * Tensor<2, 3>(old.stress) * dealii::transpose(Q));
+    // the same for the rotated strain-increment stress C : Delta eps, whose rotation is
+    // Q_half (..) Q_half^T with d Q_half = M_half d Delta W (Q_half + I) / 4 (half the rate)
+    const Tensor<2, 3> Vt_increment
+        = dealii::transpose((Q_half + I) * Tensor<2, 3>(d_stress) * dealii::transpose(Q_half));
     const bool         rotate_back_stress = old.back_stress.norm() > 0.;
     const Tensor<2, 3> Vt_back
         = rotate_back_stress
@@ -70,12 +79,20 @@ namespace ausroll::material
         = rotate_back_stress ? stress_return->back_stress_sensitivity(r) : SymmetricTensor<4, 3>();
 
     Tensor<1, 3> Ma[3], Mb[3], Va[3], Vb[3], Wa[3], Wb[3]; // M a, M b, V^T a, V^T b (stress, back)
+    Tensor<1, 3> Ha[3], Hb[3], Za[3], Zb[3]; // M_half a, M_half b, V_inc^T a, V_inc^T b
+    Tensor<1, 3> Qa[3], Qb[3];               // Q_half a, Q_half b
     for (unsigned int k = 0; k < 3; ++k)
     {
       Ma[k] = M * a_vectors[k];
       Mb[k] = M * b_vectors[k];
       Va[k] = Vt_stress * a_vectors[k];
       Vb[k] = Vt_stress * b_vectors[k];
+      Ha[k] = M_half * a_vectors[k];
+      Hb[k] = M_half * b_vectors[k];
+      Za[k] = Vt_increment * a_vectors[k];
+      Zb[k] = Vt_increment * b_vectors[k];
+      Qa[k] = Q_half * a_vectors[k];
+      Qb[k] = Q_half * b_vectors[k];
       if (rotate_back_stress)
       {
         Wa[k] = Vt_back * a_vectors[k];
@@ -97,12 +114,15 @@ namespace ausroll::material
     for (unsigned int k = 0; k < 3; ++k)
       for (unsigned int L = 0; L < 3; ++L)
       {
-        // d eps_e_trial = C^-1 : d(Q sigma_n Q^T) + d Delta eps, d Delta eps = sym(a_k (x) b_L)
-        SymmetricTensor<2, 3> d_strain = elastic.strain(rotation_rate(Ma[k], Vb[L], Mb[L], Va[k]));
+        // d eps_e_trial = C^-1 : [d(Q sigma_n Q^T) + d(Q_half) (C : Delta eps) Q_half^T + (..)^T]
+        //                + Q_half d Delta eps Q_half^T, d Delta eps = sym(a_k (x) b_L) (C is
+        //                isotropic, so Q_half (C : X) Q_half^T = C : (Q_half X Q_half^T))
+        SymmetricTensor<2, 3> d_strain
+            = elastic.strain(rotation_rate(Ma[k], Vb[L], Mb[L], Va[k])
+                             + 0.5 * rotation_rate(Ha[k], Zb[L], Hb[L], Za[k]));
         for (unsigned int i = 0; i < 3; ++i)
           for (unsigned int j = i; j < 3; ++j)
-            d_strain[i][j]
-                += 0.5 * (a_vectors[k][i] * b_vectors[L][j] + a_vectors[k][j] * b_vectors[L][i]);
+            d_strain[i][j] += 0.5 * (Qa[k][i] * Qb[L][j] + Qa[k][j] * Qb[L][i]);
         SymmetricTensor<2, 3> d_sigma = r.tangent * d_strain;
         if (rotate_back_stress)
           d_sigma += back_sensitivity * rotation_rate(Ma[k], Wb[L], Mb[L], Wa[k]);

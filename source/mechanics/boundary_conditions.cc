@@ -36,8 +36,10 @@ namespace ausroll::mechanics
                         "fixed",
                         Patterns::Selection("fixed|displacement|pressure|traction"),
                         "fixed: u = 0; displacement: the selected components follow Value; "
-                        "pressure: normal pressure Value (MPa, positive pushes into the body); "
-                        "traction: force per reference area, one expression per direction.");
+                        "pressure: normal pressure Value (MPa, positive pushes into the body), on "
+                        "the deformed surface (follower load) unless Model/Kinematics = small "
+                        "strain; traction: dead load, force per reference area, one expression per "
+                        "direction.");
       prm.declare_entry("Components",
                         "x, y",
                         Patterns::Anything(),
@@ -183,23 +185,43 @@ namespace ausroll::mechanics
   }
 
   template <int dim>
+  Tensor<1, dim> BoundaryConditions<dim>::dead_traction(const types::boundary_id id,
+                                                        const Point<dim>        &X,
+                                                        const double             time) const
+  {
+    Tensor<1, dim> t;
+    for (const Entry &e : entries)
+      if (e.condition.id == id && e.condition.type == BoundaryConditionType::traction)
+      {
+        e.function->set_time(time);
+        for (unsigned int d = 0; d < dim; ++d)
+          t[d] += e.function->value(X, d);
+      }
+    return t;
+  }
+
+  template <int dim>
+  double BoundaryConditions<dim>::pressure(const types::boundary_id id,
+                                           const Point<dim>        &X,
+                                           const double             time) const
+  {
+    double p = 0.;
+    for (const Entry &e : entries)
+      if (e.condition.id == id && e.condition.type == BoundaryConditionType::pressure)
+      {
+        e.function->set_time(time);
+        p += e.function->value(X, 0);
+      }
+    return p;
+  }
+
+  template <int dim>
   Tensor<1, dim> BoundaryConditions<dim>::traction(const types::boundary_id id,
                                                    const Point<dim>        &X,
                                                    const Tensor<1, dim>    &normal,
                                                    const double             time) const
   {
-    Tensor<1, dim> t;
-    for (const Entry &e : entries)
-      if (e.condition.id == id)
-      {
-        e.function->set_time(time);
-        if (e.condition.type == BoundaryConditionType::pressure)
-          t -= e.function->value(X, 0) * normal;
-        else if (e.condition.type == BoundaryConditionType::traction)
-          for (unsigned int d = 0; d < dim; ++d)
-            t[d] += e.function->value(X, d);
-      }
-    return t;
+    return dead_traction(id, X, time) - pressure(id, X, time) * normal;
   }
 
   template <int dim>

@@ -10,12 +10,14 @@ namespace ausroll::mechanics
     prm.enter_subsection("Model");
     prm.declare_entry(
         "Kinematics",
-        "small strain",
+        "finite strain",
         Patterns::Selection("small strain|total Lagrangian|updated Lagrangian|finite strain"),
         "Kinematic description: 'small strain' (infinitesimal), 'total Lagrangian' "
         "(Green-Lagrange strain / 2nd Piola-Kirchhoff stress), 'updated Lagrangian' "
         "(hypoelastic-plastic with Jaumann rate, as NOFEAP), 'finite strain' "
-        "(multiplicative J2 plasticity with logarithmic elastic strain).");
+        "(multiplicative J2 plasticity with logarithmic elastic strain; the default: forming "
+        "processes). "
+        "With any kinematics but small strain, pressure loads follow the deformed surface.");
     prm.declare_entry("Planar model",
                       "plane strain",
                       Patterns::Selection("plane strain|plane stress|axisymmetric"),
@@ -33,6 +35,16 @@ namespace ausroll::mechanics
                       "0",
                       Patterns::Integer(0, 6),
                       "Gauss points per direction; 0 means degree + 1.");
+    prm.declare_entry(
+        "Volumetric locking treatment",
+        "none",
+        Patterns::Selection("none|F-bar"),
+        "none: standard displacement element; F-bar: the volume change at every Gauss point is "
+        "replaced by the one at the cell centre (Q1) or by the cell average (Q2 and higher), "
+        "F_bar = (J0/J)^(1/n) F with n = 3 on the whole F (axisymmetric; plane strain with Q2 "
+        "and higher) or n = 2 on the in-plane part (plane strain with Q1, plane stress); for "
+        "small strain this is B-bar. Cures the locking of Q1 in plastic flow; consistent, "
+        "non-symmetric tangent.");
     prm.leave_subsection();
   }
 
@@ -47,9 +59,16 @@ namespace ausroll::mechanics
     thickness = prm.get_double("Thickness");
     degree = prm.get_integer("Polynomial degree");
     quadrature_points = prm.get_integer("Quadrature points");
+    volumetric_locking = prm.get("Volumetric locking treatment") == "F-bar"
+                             ? VolumetricLocking::f_bar
+                             : VolumetricLocking::none;
     prm.leave_subsection();
     require(thickness > 0., "Model/Thickness", "must be positive");
     if (quadrature_points == 0)
       quadrature_points = degree + 1;
+    require(volumetric_locking == VolumetricLocking::none || quadrature_points > 1,
+            "Model/Volumetric locking treatment",
+            "F-bar needs at least 2 quadrature points per direction (Model/Quadrature points); "
+            "with one point the volume change is constant per cell already");
   }
 } // namespace ausroll::mechanics

@@ -84,8 +84,13 @@ namespace ausroll::scene
     }
     else
       geometry::create_workpiece(parameters.geometry, triangulation);
-    assembler = std::make_unique<mechanics::Assembler<dim>>(
-        mapping, fe, parameters.model.quadrature_points, kinematics, *model, boundary_conditions);
+    assembler = std::make_unique<mechanics::Assembler<dim>>(mapping,
+                                                            fe,
+                                                            parameters.model.quadrature_points,
+                                                            kinematics,
+                                                            *model,
+                                                            boundary_conditions,
+                                                            parameters.model.volumetric_locking);
     setup_system();
     material_points.initialize(
         triangulation.begin_active(), triangulation.end(), assembler->quadrature().size());
@@ -210,6 +215,7 @@ namespace ausroll::scene
 
     for (auto *v : {&solution,
                     &step_start,
+                    &previous_start,
                     &newton_start,
                     &increment,
                     &rhs,
@@ -490,6 +496,12 @@ namespace ausroll::scene
   }
 
   template <int dim>
+  double Scene<dim>::increment_residual_product() const
+  {
+    return increment * free_residual;
+  }
+
+  template <int dim>
   solver::LinearSolveInfo Scene<dim>::solve_for_increment()
   {
     TimerOutput::Scope scope(timer, "linear solve");
@@ -515,6 +527,7 @@ namespace ausroll::scene
       if (cell->is_locally_owned())
         for (const auto &point : material_points.get_data(cell))
           point->commit();
+    previous_start = step_start;
     step_start = solution;
     contact.commit();
     largest_reference_force = std::max(largest_reference_force, last_reference_force);
@@ -688,6 +701,13 @@ namespace ausroll::scene
     {
       time = t_start + dt;
       solution = step_start;
+      if (loading.predictor == solver::Predictor::linear_extrapolation && last_step_size > 0.)
+      {
+        // u_n + (dt / dt_prev) (u_n - u_n-1)
+        const double ratio = dt / last_step_size;
+        solution.add(ratio, step_start);
+        solution.add(-ratio, previous_start);
+      }
       solution_ghosted = solution;
       newton_log << "  step " << step_number + 1 << ", t = " << time << std::endl;
       result = newton.solve(*this, newton_log);
@@ -758,7 +778,10 @@ namespace ausroll::scene
         << " MPI rank" << (Utilities::MPI::n_mpi_processes(comm) > 1 ? "s" : "") << ")\n"
         << "  mesh: " << triangulation.n_global_active_cells() << " cells, " << dof_handler.n_dofs()
         << " DoFs (FE_Q(" << parameters.model.degree << ") x " << dim << ")\n"
-        << "  kinematics: " << material::to_string(parameters.model.kinematics) << "\n"
+        << "  kinematics: " << material::to_string(parameters.model.kinematics)
+        << (parameters.model.volumetric_locking == mechanics::VolumetricLocking::f_bar ? ", F-bar"
+                                                                                       : "")
+        << "\n"
         << "  output: " << parameters.output.directory << "/" << std::endl;
     regression_log << "scene: " << parameters.name
                    << "\ncells: " << triangulation.n_global_active_cells()
@@ -816,6 +839,7 @@ namespace ausroll::scene
       dt_try = time - t_start;
 
       commit_step();
+      last_step_size = dt_try;
       ++step_number;
       t_done = time;
       const io::HistoryRow row = history_row(result, cutbacks);

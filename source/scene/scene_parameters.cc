@@ -22,7 +22,6 @@ namespace ausroll::scene
     contact::ContactParameters::declare_parameters(prm);
     adaptivity::AdaptivityParameters::declare_parameters(prm);
     io::CheckpointParameters::declare_parameters(prm);
-    contact::ContactParameters::declare_parameters(prm);
     solver::LoadingParameters::declare_parameters(prm);
     solver::SolverParameters::declare_parameters(prm);
     io::OutputParameters::declare_parameters(prm);
@@ -39,7 +38,6 @@ namespace ausroll::scene
     contact.parse_parameters(prm, input_directory);
     adaptivity.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
-    contact.parse_parameters(prm, input_directory);
     loading.parse_parameters(prm);
     solver.parse_parameters(prm);
     output.parse_parameters(prm);

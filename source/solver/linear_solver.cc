@@ -70,11 +70,26 @@ namespace ausroll::solver
     {
       if (parameters.type == LinearSolverType::direct)
       {
-        SolverControl                                  control(1, 0.);
-        TrilinosWrappers::SolverDirect::AdditionalData data(
-            false, parameters.direct_package == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
-        TrilinosWrappers::SolverDirect solver(control, data);
-        solver.solve(A, x, b);
+        SolverControl control(1, 0.);
+        const bool    mumps = parameters.direct_package == "MUMPS";
+        try
+        {
+          TrilinosWrappers::SolverDirect::AdditionalData data(
+              false, mumps ? "Amesos_Mumps" : "Amesos_Klu");
+          TrilinosWrappers::SolverDirect solver(control, data);
+          solver.solve(A, x, b);
+        }
+        catch (const std::exception &)
+        {
+          // MUMPS sizes its workspace from the analysis; the pivoting of a non-symmetric matrix
+          // (F-bar, follower loads, friction) can exceed it (INFOG(1) = -9). KLU has no such
+          // limit: retry with it before giving up.
+          if (!mumps)
+            throw;
+          TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Klu");
+          TrilinosWrappers::SolverDirect                 solver(control, data);
+          solver.solve(A, x, b);
+        }
       }
       else
       {

@@ -22,6 +22,14 @@ namespace ausroll::solver
         "1.5",
         Patterns::Double(1.),
         "After a cut-back step, later steps grow by this factor up to the nominal size.");
+    prm.declare_entry(
+        "Predictor",
+        "none",
+        Patterns::Selection("none|linear extrapolation"),
+        "First Newton iterate of a step: none (the last converged state) or linear "
+        "extrapolation of the last step's displacement increment, scaled to the step size. "
+        "Extrapolation saves many iterations in large rotations of slender bodies, where the "
+        "first iterate from the converged state carries large spurious membrane forces.");
     prm.leave_subsection();
   }
 
@@ -32,6 +40,7 @@ namespace ausroll::solver
     const int steps = prm.get_integer("Number of steps");
     max_cutbacks = prm.get_integer("Maximum cutbacks");
     step_growth_factor = prm.get_double("Step growth factor");
+    predictor = prm.get("Predictor") == "none" ? Predictor::none : Predictor::linear_extrapolation;
     prm.leave_subsection();
     require(end_time > 0., "Loading/End time", "must be positive");
     require(steps > 0, "Loading/Number of steps", "must be at least 1");

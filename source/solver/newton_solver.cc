@@ -78,6 +78,8 @@ namespace ausroll::solver
       const LinearSolveInfo info = problem.solve_for_increment();
       result.linear_iterations += info.iterations;
       ++result.iterations;
+      // directional derivative of the energy along the increment at the start of the step
+      const double slope = problem.increment_residual_product();
 
       // Full step first; backtrack only when the previous iterate satisfied the constraints
       // (a step that imposes new prescribed displacements legitimately raises the residual).
@@ -89,10 +91,27 @@ namespace ausroll::solver
         {
           if (admissible && problem.residual_norm() <= (1. - 1e-4 * step) * norm)
             break;
+          if (admissible && slope < 0.
+              && std::abs(problem.increment_residual_product()) <= 0.8 * std::abs(slope)
+              && std::isfinite(problem.residual_norm()))
+            break;
           step *= 0.5;
           problem.apply_increment(step);
           admissible = problem.assemble(true, message);
         }
+      else if (parameters.line_search)
+        // New constraints (moved dies, prescribed displacements): the residual may rise, but an
+        // inadmissible state (inverted element, failed return map) is never accepted; shorten
+        // the step instead of giving the whole load step up. The constraints not yet met are
+        // imposed again by the next iteration.
+        for (unsigned int ls = 0; ls < 6 && !admissible; ++ls)
+        {
+          step *= 0.5;
+          problem.apply_increment(step);
+          admissible = problem.assemble(true, message);
+        }
+      if (step < 1.)
+        log << "    line search: step length " << step << std::endl;
       if (!admissible)
       {
         result.reason = message;

@@ -27,7 +27,11 @@ namespace ausroll::solver
         Patterns::Double(1.),
         "A step is abandoned when the residual exceeds this multiple of its first value.");
     prm.declare_entry(
-        "Line search", "true", Patterns::Bool(), "Backtracking line search on the residual norm.");
+        "Line search",
+        "true",
+        Patterns::Bool(),
+        "Backtracking line search: a step is accepted when the residual norm decreases or the "
+        "energy criterion |d.r(eta)| <= 0.8 |d.r(0)| holds.");
     prm.enter_subsection("Linear solver");
     prm.declare_entry(
         "Type",

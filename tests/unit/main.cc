@@ -1,8 +1,7 @@
 /**
  * @file main.cc
  * Entry point of the GoogleTest unit-test executable `ausroll_unit_tests` (the executable links
- * GTest::gtest, not gtest_main). MPI is initialised because distributed triangulations and
- * Trilinos objects need it.
+ * GTest::gtest, not gtest_main) and initialises MPI.
  */
 #include <deal.II/base/mpi.h>
 
@@ -10,6 +9,7 @@
 
 int main(int argc, char **argv)
 {
+  // MPI (one thread) for the tests that use Trilinos vectors (assembler).
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   ::testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();

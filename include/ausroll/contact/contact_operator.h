@@ -247,5 +247,6 @@ namespace ausroll::contact
     double                                 time = 0.;
     double                                 gap_tolerance = 1e-10;
     double                                 force_tolerance = 0.;
+    double area_floor = 0.; ///< tributary areas below this are zero (nodes on the axis)
   };
 } // namespace ausroll::contact

@@ -19,19 +19,24 @@ namespace ausroll::material
    *   configuration), Delta eps = sym Delta L, Delta W = skew Delta L;
    * - Q = (I - Delta W / 2)^-1 (I + Delta W / 2), an exact rotation (Cayley transform); for a rigid
    *   increment F = R F_n it reproduces Q = R exactly;
-   * - sigma_trial = Q sigma_n Q^T + C : Delta eps, back stress Q beta_n Q^T, then the return
-   *   mapping of the PlasticityModel;
+   * - Q_half = (I - Delta W / 4)^-1 (I + Delta W / 4), the rotation over the second half of the
+   *   increment (from the midpoint configuration, where Delta eps is measured, to the end);
+   * - sigma_trial = Q sigma_n Q^T + Q_half (C : Delta eps) Q_half^T, back stress Q beta_n Q^T, then
+   *   the return mapping of the PlasticityModel;
    * - P = J sigma F^-T.
    *
-   * Accuracy: the rotation of sigma_n is second order, but the strain increment C : Delta eps is
-   * added unrotated, so the coupling of spin and stretching ([W, D]) is integrated to first order
-   * only (elastic simple shear: error about mu Delta gamma in the stresses, see the unit test).
+   * Accuracy: both the rotation of sigma_n and the coupling of spin and stretching ([W, D]) are
+   * integrated to second order: the strain increment is rotated by the half-step rotation. Adding
+   * C : Delta eps unrotated (the classical Hughes-Winget form) is first order only (elastic simple
+   * shear to gamma = 2 pi in 1000 steps: error 6.3e-3 mu unrotated, below 1e-5 mu rotated; see the
+   * unit test ElasticSimpleShearConvergesToJaumannClosedForm).
    *
    * Tangent: the exact derivative dP/dF of this discrete update, computed analytically column by
    * column (one direction dF = e_k (x) e_L at a time): d Delta L = (I - Delta L / 2) dF F_mid^-1,
-   * dQ = M dW (Q + I) / 2 with M = (I - Delta W / 2)^-1, the return-mapping tangents w.r.t. the
-   * trial stress (D C^-1) and the rotated back stress (PlasticityModel::back_stress_sensitivity),
-   * and the derivatives of J and F^-T.
+   * dQ = M dW (Q + I) / 2 with M = (I - Delta W / 2)^-1, dQ_half = M_half dW (Q_half + I) / 4 with
+   * M_half = (I - Delta W / 4)^-1, the return-mapping tangents w.r.t. the trial stress (D C^-1) and
+   * the rotated back stress (PlasticityModel::back_stress_sensitivity), and the derivatives of J
+   * and F^-T.
    *
    * State: @ref MaterialState::stress is the Cauchy stress, @ref MaterialState::back_stress a
    * spatial (Cauchy-space) tensor, @ref MaterialState::plastic_strain the accumulated plastic

@@ -62,18 +62,49 @@ namespace ausroll::mechanics
    * Assembles residual and tangent of quasi-static equilibrium, div P = 0 in the reference
    * configuration, for any ConstitutiveModel. The 3D embedding of the planar model comes from
    * PlanarKinematics; surface loads from BoundaryConditions.
+   *
+   * Surface loads: `traction` conditions are dead loads per reference area. `pressure` conditions
+   * act on the reference surface for a small-strain model and on the deformed surface otherwise
+   * (follower load): the nominal traction is t0 = -p J F^-T N, computed from the deformed tangent
+   * of the face, a = F T (T the reference unit tangent): t0 dA = -p (a_y, -a_x) dL, times the hoop
+   * stretch r / R in axisymmetric models (the deformed area element is 2 pi r dl). Its derivative
+   * (the load stiffness, non-symmetric) enters the tangent, so Newton stays quadratic. Plane
+   * stress: the change of thickness is not included (force per deformed length and reference
+   * thickness; the thickness stretch lives at the material points, not on the faces).
+   *
+   * Volumetric locking (`Model/Volumetric locking treatment = F-bar`, de Souza Neto, Peric,
+   * Dutko and Owen 1996): the material points see F_bar = s F with s = (J0 / J)^(1/n), J = det F
+   * at the point and J0 = det F at the centre of the cell for Q1 (for Q2 and higher the volume
+   * average of det F over the cell, the mean dilatation: one centre value leaves the volumetric
+   * modes of Q2 that vanish at the centre free, and a flat-punch limit load came out 7 % low),
+   * n = PlanarKinematics::
+   * volumetric_dimensions() (n = 2 scales only the in-plane block of F, so F_bar_zz = 1 stays
+   * plane strain; n = 3 scales the whole F, hoop stretch included). Exception: Q2 and higher in
+   * plane strain use n = 3 on the whole F (F_bar_zz = s, like Hughes' B-bar with eps_bar_zz =
+   * (theta_0 - theta) / 3): with the in-plane scaling the volume correction changes the 3D
+   * deviatoric strain, and Q2 came out 7 % too soft in the Prandtl punch (0.928 p_lim; isotropic:
+   * 0.998). Plane stress always uses n = 2 (F_zz comes from sigma_zz = 0). The internal force is
+   * the spatial virtual work of sigma(F_bar) on the current configuration, int sigma_bar : grad_x
+   * dv = int (J s / J0) P(F_bar) : Grad dV. The exact tangent has the extra non-symmetric term of
+   * the cell-centre gradient. For small strain the same construction with F_bar = F + (tr(F0 - I) -
+   * tr(F - I)) / n I_n is the B-bar method (tr(F0 - I) at the centre for Q1, averaged over the cell
+   * for higher degrees).
    */
   template <int dim>
   class Assembler
   {
   public:
-    /** Assembler for the element @p fe with @p n_q_points_1d Gauss points per direction. */
+    /**
+     * Assembler for the element @p fe with @p n_q_points_1d Gauss points per direction and the
+     * treatment @p locking of volumetric locking (`Model/Volumetric locking treatment`).
+     */
     Assembler(const dealii::Mapping<dim>        &mapping,
               const dealii::FiniteElement<dim>  &fe,
               const unsigned int                 n_q_points_1d,
               const PlanarKinematics<dim>       &kinematics,
               const material::ConstitutiveModel &model,
-              const BoundaryConditions<dim>     &boundary_conditions);
+              const BoundaryConditions<dim>     &boundary_conditions,
+              const VolumetricLocking            locking = VolumetricLocking::none);
 
     /** The cell quadrature (material points live at its points). */
     const dealii::Quadrature<dim> &quadrature() const { return cell_quadrature; }
@@ -101,5 +132,6 @@ namespace ausroll::mechanics
     const PlanarKinematics<dim>       &kinematics;
     const material::ConstitutiveModel &model;
     const BoundaryConditions<dim>     &boundary_conditions;
+    const VolumetricLocking            locking; ///< `Model/Volumetric locking treatment`
   };
 } // namespace ausroll::mechanics

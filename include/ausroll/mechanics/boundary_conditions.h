@@ -23,7 +23,8 @@ namespace ausroll::mechanics
   {
     fixed,        ///< all displacement components zero
     displacement, ///< selected components follow `Value` (one expression per selected component)
-    pressure, ///< normal pressure `Value` (positive pushes into the body) on the reference surface
+    pressure, ///< normal pressure `Value` (positive pushes into the body): on the deformed surface
+              ///< (follower load) unless `Model/Kinematics = small strain`
     traction  ///< traction vector `Value` (dim expressions) per reference area (dead load)
   };
 
@@ -72,8 +73,25 @@ namespace ausroll::mechanics
     bool has_surface_load(const dealii::types::boundary_id id) const;
 
     /**
-     * Surface traction (force per reference area) at reference point @p X with outward unit normal
-     * @p normal on boundary @p id at time @p time.
+     * Dead surface traction (force per reference area) on boundary @p id at reference point @p X
+     * and time @p time: the sum of the `traction` conditions on @p id.
+     */
+    dealii::Tensor<1, dim> dead_traction(const dealii::types::boundary_id id,
+                                         const dealii::Point<dim>        &X,
+                                         const double                     time) const;
+
+    /**
+     * Pressure (positive pushes into the body) on boundary @p id at reference point @p X and time
+     * @p time: the sum of the `pressure` conditions on @p id. The assembler applies it on the
+     * reference surface (small strain) or on the deformed surface (follower load).
+     */
+    double pressure(const dealii::types::boundary_id id,
+                    const dealii::Point<dim>        &X,
+                    const double                     time) const;
+
+    /**
+     * Reference-surface traction: dead_traction() - pressure() @p normal, @p normal being the
+     * outward unit normal of the reference surface (the small-strain surface load).
      */
     dealii::Tensor<1, dim> traction(const dealii::types::boundary_id id,
                                     const dealii::Point<dim>        &X,

@@ -19,15 +19,28 @@ namespace ausroll::mechanics
   };
 
   /**
+   * Treatment of volumetric locking of nearly incompressible (plastic) flow
+   * (`Model/Volumetric locking treatment`).
+   */
+  enum class VolumetricLocking
+  {
+    none, ///< standard displacement element (Q1 locks in plastic flow)
+    f_bar ///< F-bar (de Souza Neto et al. 1996): the volume change of each cell is taken from its
+          ///< centre, F_bar = (J0 / J)^(1/n) F; for small strain the mean-dilatation B-bar
+  };
+
+  /**
    * Parameters of subsection `Model`.
    */
   struct ModelParameters
   {
-    material::KinematicsType kinematics = material::KinematicsType::small_strain; ///< `Kinematics`
+    material::KinematicsType kinematics = material::KinematicsType::finite_strain; ///< `Kinematics`
     PlanarModel              planar_model = PlanarModel::plane_strain; ///< `Planar model`
     double                   thickness = 1.; ///< `Thickness` of plane models (forces scale with it)
     unsigned int             degree = 2;     ///< `Polynomial degree` of the displacement FE_Q
     unsigned int quadrature_points = 0;      ///< `Quadrature points` per direction (0: degree+1)
+    /** `Volumetric locking treatment` */
+    VolumetricLocking volumetric_locking = VolumetricLocking::none;
 
     /** Declare subsection `Model`. */
     static void declare_parameters(dealii::ParameterHandler &prm);

@@ -44,6 +44,13 @@ namespace ausroll::mechanics
     /** Factor turning the reference area element dA into the volume element dV. */
     double volume_factor(const dealii::Point<dim> &X) const;
 
+    /**
+     * Number n of directions that carry volume change in the F-bar method: 2 for plane strain and
+     * plane stress (only the in-plane block of F is scaled, F_zz stays), 3 for axisymmetric and 3D
+     * models (the whole F, hoop stretch included, is scaled).
+     */
+    unsigned int volumetric_dimensions() const { return is_axisymmetric() || dim == 3 ? 3 : 2; }
+
     /** True for the axisymmetric model (shape function values enter the gradient). */
     bool is_axisymmetric() const { return model == PlanarModel::axisymmetric && dim == 2; }
 

@@ -62,6 +62,7 @@ namespace ausroll::scene
     solver::LinearSolveInfo solve_for_increment() override;
     void                    apply_increment(const double step_length) override;
     double                  length_scale() const override;
+    double                  increment_residual_product() const override;
     //@}
 
   private:
@@ -129,6 +130,7 @@ namespace ausroll::scene
     dealii::TrilinosWrappers::MPI::Vector  solution;         ///< current iterate (owned)
     dealii::TrilinosWrappers::MPI::Vector  solution_ghosted; ///< current iterate (relevant)
     dealii::TrilinosWrappers::MPI::Vector  step_start;       ///< last converged solution
+    dealii::TrilinosWrappers::MPI::Vector  previous_start;   ///< the converged solution before it
     dealii::TrilinosWrappers::MPI::Vector  newton_start;     ///< iterate at the last linear solve
     dealii::TrilinosWrappers::MPI::Vector  increment;        ///< Newton increment
     dealii::TrilinosWrappers::MPI::Vector  rhs;              ///< Newton right-hand side
@@ -148,8 +150,9 @@ namespace ausroll::scene
     solver::LinearSolver<dim>                    linear_solver;
     solver::NewtonSolver                         newton;
 
-    double       time = 0.;       ///< pseudo-time of the current iterate
-    unsigned int step_number = 0; ///< converged steps so far
+    double       time = 0.;           ///< pseudo-time of the current iterate
+    double       last_step_size = 0.; ///< size of the last converged step (predictor)
+    unsigned int step_number = 0;     ///< converged steps so far
     unsigned int output_counter = 0;
     int          last_output_step = -1;
 

@@ -8,6 +8,13 @@
 
 namespace ausroll::solver
 {
+  /** Initial guess of the Newton iteration of a load step (`Loading/Predictor`). */
+  enum class Predictor
+  {
+    none,                ///< start from the last converged state
+    linear_extrapolation ///< u_n + (dt / dt_prev) (u_n - u_n-1): follows the path of the last step
+  };
+
   /**
    * Parameters of subsection `Loading`. Loads and prescribed motions are functions of the
    * pseudo-time t in [0, End time]; the load factor reported in the history is t / End time.
@@ -18,6 +25,7 @@ namespace ausroll::solver
     unsigned int number_of_steps = 10;     ///< `Number of steps` (nominal step = End time / steps)
     unsigned int max_cutbacks = 6;         ///< `Maximum cutbacks` per step (each halves the step)
     double       step_growth_factor = 1.5; ///< `Step growth factor` back towards the nominal step
+    Predictor    predictor = Predictor::none; ///< `Predictor` of the first Newton iterate
 
     /** Declare subsection `Loading`. */
     static void declare_parameters(dealii::ParameterHandler &prm);

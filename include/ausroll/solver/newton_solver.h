@@ -48,6 +48,13 @@ namespace ausroll::solver
 
     /** Length scale for the constraint tolerance (e.g. the mesh size), in mm. */
     virtual double length_scale() const = 0;
+
+    /**
+     * The product d . r of the last increment d (solve_for_increment()) with the out-of-balance
+     * force of the free equations r at the last assembly: the directional derivative of the
+     * potential energy along d (negative at the start of a descent step, zero at its minimum).
+     */
+    virtual double increment_residual_product() const = 0;
   };
 
   /** Outcome of one Newton solve. */
@@ -64,6 +71,16 @@ namespace ausroll::solver
    * Newton-Raphson with a backtracking line search (`Solver/Line search`), convergence test
    * |r_free| <= max(absolute tolerance, residual tolerance * force level) with satisfied
    * constraints, and detection of divergence, NaN and inadmissible states.
+   *
+   * Line search: a step length eta (1, 1/2, 1/4, ...) is accepted when the state is admissible
+   * and either the residual norm decreases (|r(eta)| <= (1 - 1e-4 eta) |r(0)|) or the energy
+   * criterion of Matthies and Strang / Crisfield holds, |d . r(eta)| <= 0.8 |d . r(0)| with
+   * d . r(0) < 0. The second criterion lets Newton take the full step where the residual norm
+   * rises temporarily although the step is good, as in slender structures whose first iterate
+   * carries large spurious membrane forces (the cantilever: the residual grows by 60 after the
+   * first iteration, the next iteration converges). While the constraints are not yet satisfied
+   * (the first iteration of a step with moved dies or prescribed displacements) the residual may
+   * rise and only inadmissible states (inverted elements, failed material updates) are backtracked.
    */
   class NewtonSolver
   {
