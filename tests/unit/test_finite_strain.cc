@@ -12,6 +12,8 @@
 #include <ausroll/material/total_lagrangian_model.h>
 #include <ausroll/material/updated_lagrangian_jaumann_model.h>
 
+#include "material_test_utilities.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -98,37 +100,7 @@ namespace
     return relative_difference(Tensor<2, 3>(X), Tensor<2, 3>(Y));
   }
 
-  /**
-   * Central finite-difference check of A = dP/dF at F for the committed state @p old: max |A_fd -
-   * A| / max |A| (h = 1e-7; the same measure as the small-strain model's test).
-   */
-  double
-  tangent_error(const ConstitutiveModel &model, const MaterialState &old, const Tensor<2, 3> &F)
-  {
-    MaterialState trial;
-    Tensor<2, 3>  P;
-    Tensor<4, 3>  A;
-    model.evaluate(F, old, trial, P, &A);
-    const double h = 1e-7;
-    double       max_err = 0., scale = 0.;
-    for (unsigned int k = 0; k < 3; ++k)
-      for (unsigned int l = 0; l < 3; ++l)
-      {
-        Tensor<2, 3> Fp = F, Fm = F, Pp, Pm;
-        Fp[k][l] += h;
-        Fm[k][l] -= h;
-        model.evaluate(Fp, old, trial, Pp, nullptr);
-        model.evaluate(Fm, old, trial, Pm, nullptr);
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = 0; j < 3; ++j)
-          {
-            const double fd = (Pp[i][j] - Pm[i][j]) / (2. * h);
-            max_err = std::max(max_err, std::abs(fd - A[i][j][k][l]));
-            scale = std::max(scale, std::abs(A[i][j][k][l]));
-          }
-      }
-    return max_err / scale;
-  }
+  using ausroll::testing::tangent_error;
 
   /** Evaluate and commit a sequence of deformation gradients (linear path from the current F). */
   void load_along(const ConstitutiveModel &model,

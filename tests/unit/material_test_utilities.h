@@ -1,0 +1,48 @@
+/**
+ * @file material_test_utilities.h
+ * Helpers shared by the material unit tests.
+ */
+#pragma once
+
+#include <ausroll/material/constitutive_model.h>
+
+#include <deal.II/base/tensor.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ausroll::testing
+{
+  /**
+   * Central finite-difference check of A = dP/dF of @p model at @p F for the committed state
+   * @p old: max |A_fd - A| / max |A| with h = 1e-7 (truncation ~1e-12, round-off ~1e-9 relative).
+   */
+  inline double tangent_error(const material::ConstitutiveModel &model,
+                              const material::MaterialState     &old,
+                              const dealii::Tensor<2, 3>        &F)
+  {
+    material::MaterialState trial;
+    dealii::Tensor<2, 3>    P;
+    dealii::Tensor<4, 3>    A;
+    model.evaluate(F, old, trial, P, &A);
+    const double h = 1e-7;
+    double       max_err = 0., scale = 0.;
+    for (unsigned int k = 0; k < 3; ++k)
+      for (unsigned int l = 0; l < 3; ++l)
+      {
+        dealii::Tensor<2, 3> Fp = F, Fm = F, Pp, Pm;
+        Fp[k][l] += h;
+        Fm[k][l] -= h;
+        model.evaluate(Fp, old, trial, Pp, nullptr);
+        model.evaluate(Fm, old, trial, Pm, nullptr);
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+          {
+            const double fd = (Pp[i][j] - Pm[i][j]) / (2. * h);
+            max_err = std::max(max_err, std::abs(fd - A[i][j][k][l]));
+            scale = std::max(scale, std::abs(A[i][j][k][l]));
+          }
+      }
+    return max_err / scale;
+  }
+} // namespace ausroll::testing
