@@ -219,3 +219,11 @@ ausroll_add_script_check(NAME cantilever_large_deflection
 # outside fold-over events (0.5 %), force and bulge at 30 % vs the Q2 16x12 reference (2 %, 1 %),
 # small strain underestimates the load (> 20 %). About 25 s.
 ausroll_add_script_check(NAME upsetting SCRIPT ${AUSROLL_CHECKS_DIR}/check_upsetting.py)
+
+# ---------------------------------------------------------------- documentation
+# doc/parameters.md must be exactly what `ausroll --print-parameters=markdown` prints (regenerate
+# with scripts/update_docs.sh after adding or changing a parameter).
+add_test(NAME check/parameters_doc_current
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:ausroll> -DDOC=${CMAKE_SOURCE_DIR}/doc/parameters.md
+          -DOUT=${CMAKE_CURRENT_BINARY_DIR}/parameters.md -P ${AUSROLL_CHECKS_DIR}/run_doc_check.cmake)
+set_tests_properties(check/parameters_doc_current PROPERTIES LABELS check)
