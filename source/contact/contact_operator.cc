@@ -410,10 +410,7 @@ namespace ausroll::contact
   {
     for (Node &n : nodes)
     {
-      n.c_status = n.status;
-      n.c_die = n.die;
-      n.c_stick = n.stick;
-      n.c_sign = n.sign;
+      n.commit_status();
       n.c_s = n.projection.s;
       n.c_gap = n.projection.gap;
       n.c_gap_valid = n.projection.valid;
@@ -447,10 +444,7 @@ namespace ausroll::contact
   {
     for (Node &n : nodes)
     {
-      n.c_status = n.status;
-      n.c_die = n.die;
-      n.c_stick = n.stick;
-      n.c_sign = n.sign;
+      n.commit_status();
       if (n.status == ContactStatus::slip)
         n.c_s = n.s_ref;
     }
@@ -461,11 +455,7 @@ namespace ausroll::contact
   {
     for (Node &n : nodes)
     {
-      n.status = n.c_status;
-      n.die = n.c_die;
-      n.stick = n.c_stick;
-      n.sign = n.c_sign;
-      n.s_ref = n.c_s;
+      n.restore_status();
       n.changes = 0;
       n.Rn = n.c_Rn;
       n.Rt = n.c_Rt;
@@ -585,13 +575,16 @@ namespace ausroll::contact
   }
 
   template <int dim>
-  unsigned int ContactOperator<dim>::n_closed(const MPI_Comm comm) const
+  std::pair<unsigned int, unsigned int> ContactOperator<dim>::n_stick_slip() const
   {
-    unsigned int count = 0;
+    unsigned int n_stick = 0, n_slip = 0;
     for (const Node &n : nodes)
-      if (n.owned && n.status != ContactStatus::open)
-        ++count;
-    return Utilities::MPI::sum(count, comm);
+      if (n.owned)
+      {
+        n_stick += n.status == ContactStatus::stick ? 1 : 0;
+        n_slip += n.status == ContactStatus::slip ? 1 : 0;
+      }
+    return {Utilities::MPI::sum(n_stick, comm), Utilities::MPI::sum(n_slip, comm)};
   }
 
   namespace
@@ -693,7 +686,7 @@ namespace ausroll::contact
               = dies[k]->die_surface().project(dies[k]->pose(times.front()).to_local(to_2d(n.X)));
           if (p0.gap < deepest)
           {
-            deepest      = p0.gap;
+            deepest = p0.gap;
             deepest_node = to_2d(n.X);
           }
           for (const double t : times)
@@ -704,7 +697,8 @@ namespace ausroll::contact
           }
         }
       if (Utilities::MPI::sum(n_candidates, comm) == 0)
-        throw InputError(path + "/Candidate boundaries: no workpiece boundary node carries these ids");
+        throw InputError(path
+                         + "/Candidate boundaries: no workpiece boundary node carries these ids");
       const double global_deepest = Utilities::MPI::min(deepest, comm);
       if (global_deepest < -0.05 * workpiece_size)
       {

@@ -55,7 +55,7 @@ namespace ausroll::scene
       , log(std::cout, prints(prm.output.verbosity, {Verbosity::normal, Verbosity::verbose}, rank))
       , newton_log(std::cout, prints(prm.output.verbosity, {Verbosity::verbose}, rank))
       , regression_log(std::cout, prints(prm.output.verbosity, {Verbosity::regression}, rank))
-      , timer(comm, log, TimerOutput::never, TimerOutput::wall_times)
+      , timer(std::make_unique<TimerOutput>(comm, log, TimerOutput::never, TimerOutput::wall_times))
       , triangulation(comm,
                       typename Triangulation<dim>::MeshSmoothing(
                           Triangulation<dim>::smoothing_on_refinement
@@ -73,64 +73,74 @@ namespace ausroll::scene
       , linear_solver(prm.solver.linear)
       , newton(prm.solver)
   {
-    TimerOutput::Scope scope(timer, "setup");
-    const std::string &dir = parameters.output.directory;
-    if (resuming)
+    // An error while setting up (bad mesh file, implausible die, ...) is caught here so that
+    // the timer is destroyed while no exception is in flight (it would print an MPI warning).
+    try
     {
-      // The coarse mesh, then the refined, partitioned mesh of the checkpoint.
-      geometry::create_workpiece(parameters.geometry, triangulation, /*refine=*/false);
-      checkpoint_directory = io::CheckpointDirectory(dir, comm).latest();
-      triangulation.load(checkpoint_directory + "/mesh");
-    }
-    else
-      geometry::create_workpiece(parameters.geometry, triangulation);
-    assembler = std::make_unique<mechanics::Assembler<dim>>(mapping,
-                                                            fe,
-                                                            parameters.model.quadrature_points,
-                                                            kinematics,
-                                                            *model,
-                                                            boundary_conditions,
-                                                            parameters.model.volumetric_locking);
-    setup_system();
-    material_points.initialize(
-        triangulation.begin_active(), triangulation.end(), assembler->quadrature().size());
-    point_transfer = std::make_unique<adaptivity::MaterialPointTransfer<dim>>(
-        triangulation,
-        material_points,
-        assembler->quadrature(),
-        parameters.adaptivity.polynomial_transfer ? adaptivity::TransferMethod::polynomial
-                                                  : adaptivity::TransferMethod::nearest_point,
-        [this](material::MaterialState &state) { model->make_admissible(state); });
-    if (resuming)
-    {
-      // Same order as in write_checkpoint(): solution first, then the material points.
-      parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector> transfer(
-          dof_handler);
-      transfer.deserialize(solution);
-      solution_ghosted = solution;
-      step_start = solution;
-      point_transfer->prepare();
-      point_transfer->unpack();
-    }
-    setup_postprocessing();
+      TimerOutput::Scope scope(*timer, "setup");
+      const std::string &dir = parameters.output.directory;
+      if (resuming)
+      {
+        // The coarse mesh, then the refined, partitioned mesh of the checkpoint.
+        geometry::create_workpiece(parameters.geometry, triangulation, /*refine=*/false);
+        checkpoint_directory = io::CheckpointDirectory(dir, comm).latest();
+        triangulation.load(checkpoint_directory + "/mesh");
+      }
+      else
+        geometry::create_workpiece(parameters.geometry, triangulation);
+      assembler = std::make_unique<mechanics::Assembler<dim>>(mapping,
+                                                              fe,
+                                                              parameters.model.quadrature_points,
+                                                              kinematics,
+                                                              *model,
+                                                              boundary_conditions,
+                                                              parameters.model.volumetric_locking);
+      setup_system();
+      material_points.initialize(
+          triangulation.begin_active(), triangulation.end(), assembler->quadrature().size());
+      point_transfer = std::make_unique<adaptivity::MaterialPointTransfer<dim>>(
+          triangulation,
+          material_points,
+          assembler->quadrature(),
+          parameters.adaptivity.polynomial_transfer ? adaptivity::TransferMethod::polynomial
+                                                    : adaptivity::TransferMethod::nearest_point,
+          [this](material::MaterialState &state) { model->make_admissible(state); });
+      if (resuming)
+      {
+        // Same order as in write_checkpoint(): solution first, then the material points.
+        parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector> transfer(
+            dof_handler);
+        transfer.deserialize(solution);
+        solution_ghosted = solution;
+        step_start = solution;
+        point_transfer->prepare();
+        point_transfer->unpack();
+      }
+      setup_postprocessing();
 
-    // Output directory and files.
-    int created = 1;
-    if (rank == 0)
-    {
-      std::error_code ec;
-      std::filesystem::create_directories(dir, ec);
-      created = !ec && std::filesystem::is_directory(dir);
+      // Output directory and files.
+      int created = 1;
+      if (rank == 0)
+      {
+        std::error_code ec;
+        std::filesystem::create_directories(dir, ec);
+        created = !ec && std::filesystem::is_directory(dir);
+      }
+      if (Utilities::MPI::broadcast(comm, created, 0) == 0)
+        throw InputError("Output/Directory: cannot create '" + dir + "'");
+      writer = std::make_unique<io::SolutionWriter<dim>>(dir, comm);
     }
-    if (Utilities::MPI::broadcast(comm, created, 0) == 0)
-      throw InputError("Output/Directory: cannot create '" + dir + "'");
-    writer = std::make_unique<io::SolutionWriter<dim>>(dir, comm);
+    catch (...)
+    {
+      timer.reset();
+      throw;
+    }
   }
 
   template <int dim>
   void Scene<dim>::write_checkpoint(const double dt)
   {
-    TimerOutput::Scope            scope(timer, "checkpoint");
+    TimerOutput::Scope            scope(*timer, "checkpoint");
     const io::CheckpointDirectory checkpoints(parameters.output.directory, comm);
     const std::string             dir = checkpoints.begin_write();
 
@@ -302,7 +312,7 @@ namespace ausroll::scene
   {
     const adaptivity::AdaptivityParameters &p = parameters.adaptivity;
     {
-      TimerOutput::Scope                 scope(timer, "adaptivity");
+      TimerOutput::Scope                 scope(*timer, "adaptivity");
       const adaptivity::DieDistance<dim> die_distance
           = contact.active() ? adaptivity::DieDistance<dim>(
                 [this, next_time](const Point<dim> &x) {
@@ -404,7 +414,7 @@ namespace ausroll::scene
   template <int dim>
   bool Scene<dim>::assemble(const bool with_matrix, std::string &message)
   {
-    TimerOutput::Scope scope(timer, "assembly");
+    TimerOutput::Scope scope(*timer, "assembly");
     const bool         active_set
         = contact.active() && contact.strategy() == contact::ContactStrategy::active_set;
     contact.set_time(time);
@@ -504,7 +514,7 @@ namespace ausroll::scene
   template <int dim>
   solver::LinearSolveInfo Scene<dim>::solve_for_increment()
   {
-    TimerOutput::Scope scope(timer, "linear solve");
+    TimerOutput::Scope scope(*timer, "linear solve");
     newton_start = solution;
     increment = 0.;
     const solver::LinearSolveInfo info = linear_solver.solve(system_matrix, increment, rhs);
@@ -635,7 +645,7 @@ namespace ausroll::scene
   {
     if (last_output_step == static_cast<int>(step_number))
       return;
-    TimerOutput::Scope scope(timer, "output");
+    TimerOutput::Scope scope(*timer, "output");
     probes->write(parameters.output.directory,
                   output_counter,
                   time,
@@ -799,7 +809,8 @@ namespace ausroll::scene
         for (unsigned int k = 0; k <= loading.number_of_steps; ++k)
           times.push_back(k * nominal_dt);
         const auto box = GridTools::compute_bounding_box(triangulation);
-        contact.check_dies(times, box.get_boundary_points().first.distance(box.get_boundary_points().second));
+        contact.check_dies(
+            times, box.get_boundary_points().first.distance(box.get_boundary_points().second));
       }
       // Initial (undeformed) state.
       history = std::make_unique<io::History>(comm, parameters.output.directory + "/history.csv");
@@ -851,9 +862,14 @@ namespace ausroll::scene
       percent << std::fixed << std::setprecision(1) << std::setw(5) << 100. * fraction;
       log << "step " << std::setw(4) << step_number << "  t = " << std::setw(9) << t_done << "  ("
           << percent.str() << "%)  Newton " << std::setw(2) << result.iterations << "  cutbacks "
-          << cutbacks << "  DoFs " << dof_handler.n_dofs() << "  elapsed "
-          << format_seconds(elapsed) << "  ETA "
-          << format_seconds(elapsed * (1. - fraction) / fraction) << std::endl;
+          << cutbacks;
+      if (contact.active())
+      {
+        const auto [n_stick, n_slip] = contact.n_stick_slip();
+        log << "  stick/slip " << n_stick << "/" << n_slip;
+      }
+      log << "  DoFs " << dof_handler.n_dofs() << "  elapsed " << format_seconds(elapsed)
+          << "  ETA " << format_seconds(elapsed * (1. - fraction) / fraction) << std::endl;
       std::ostringstream line;
       line << "step " << step_number << std::setprecision(5);
       for (const auto &entry : row)
@@ -888,7 +904,7 @@ namespace ausroll::scene
     log << std::endl;
     if (parameters.output.verbosity != io::Verbosity::regression
         && parameters.output.verbosity != io::Verbosity::quiet)
-      timer.print_summary();
+      timer->print_summary();
     regression_log << "finished: " << step_number << " steps" << std::endl;
   }
 

@@ -180,8 +180,8 @@ namespace ausroll::contact
     void fill_output_vectors(dealii::TrilinosWrappers::MPI::Vector &pressure_traction,
                              dealii::TrilinosWrappers::MPI::Vector &status_gap) const;
 
-    /** Number of closed nodes (global). */
-    unsigned int n_closed(const MPI_Comm comm) const;
+    /** Numbers of sticking and of slipping nodes (global, all dies), for the status line. */
+    std::pair<unsigned int, unsigned int> n_stick_slip() const;
 
   private:
     struct Node
@@ -213,6 +213,24 @@ namespace ausroll::contact
       dealii::Tensor<1, dim> R;          ///< nodal contact force (residual)
       double                 Rn = 0., Rt = 0.;
       unsigned int           changes = 0; ///< status changes in the current step
+
+      /** Make the current status, die, stick point and slip sign the committed ones. */
+      void commit_status()
+      {
+        c_status = status;
+        c_die = die;
+        c_stick = stick;
+        c_sign = sign;
+      }
+      /** Return status, die, stick point, slip sign and slip origin to the committed ones. */
+      void restore_status()
+      {
+        status = c_status;
+        die = c_die;
+        stick = c_stick;
+        sign = c_sign;
+        s_ref = c_s;
+      }
     };
 
     /** A status change of a node: at which fraction of the step, to which status. */

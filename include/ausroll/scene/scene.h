@@ -114,7 +114,8 @@ namespace ausroll::scene
     dealii::ConditionalOStream log;            ///< status lines (Verbosity normal/verbose)
     dealii::ConditionalOStream newton_log;     ///< Newton iterations (Verbosity verbose)
     dealii::ConditionalOStream regression_log; ///< deterministic lines (Verbosity regression)
-    dealii::TimerOutput        timer;          ///< wall-time summary
+    std::unique_ptr<dealii::TimerOutput>
+        timer; ///< wall-time summary (reset early after a setup error)
 
     dealii::parallel::distributed::Triangulation<dim> triangulation;
     dealii::FESystem<dim>                             fe;
