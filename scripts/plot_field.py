@@ -3,7 +3,8 @@
 
 Usage:
   scripts/plot_field.py FILE.pvtu FIELD [-o OUT.png] [--warp SCALE] [--component N]
-                        [--edges] [--range MIN MAX] [--window XMIN XMAX YMIN YMAX] [--title TEXT] [--cmap NAME]
+                        [--edges] [--range MIN MAX] [--window XMIN XMAX YMIN YMAX]
+                        [--mirror x|y] [--title TEXT] [--cmap NAME]
 
 FILE may be a .pvtu (all ranks) or a single .vtu, or a .pvd (the last time step is used).
 FIELD is a point or cell array name as listed by --list (e.g. equivalent_plastic_strain,
@@ -79,6 +80,8 @@ def main():
     p.add_argument("--window", type=float, nargs=4, metavar=("XMIN", "XMAX", "YMIN", "YMAX"), help="zoom")
     p.add_argument("--title")
     p.add_argument("--cmap", default="viridis")
+    p.add_argument("--mirror", action="append", choices=["x", "y"], default=[],
+                   help="also draw the mirror image about the line x = 0 (x) or y = 0 (y); repeatable")
     p.add_argument("--list", action="store_true", help="list the fields and exit")
     args = p.parse_args()
 
@@ -105,9 +108,16 @@ def main():
         nodes = [ids.GetId(i) for i in range(ids.GetNumberOfIds())]
         polygons.append(points[nodes])
         cell_values.append(values[c] if where == "cell" else values[nodes].mean())
+    for axis in args.mirror:
+        flip = np.array([-1.0, 1.0]) if axis == "x" else np.array([1.0, -1.0])
+        polygons += [poly * flip for poly in polygons]
+        cell_values += cell_values
     cell_values = np.asarray(cell_values)
+    allpts = np.vstack(polygons)
+    width, height = np.ptp(allpts[:, 0]) or 1.0, np.ptp(allpts[:, 1]) or 1.0
+    aspect = min(max(height / width, 0.25), 2.0)
 
-    fig, ax = plt.subplots(figsize=(7, 6))
+    fig, ax = plt.subplots(figsize=(8, 8 * aspect + 1.0))
     coll = PolyCollection(polygons, array=cell_values, cmap=args.cmap,
                           edgecolors="k" if args.edges else "face", linewidths=0.15 if args.edges else 0.05)
     if args.range:
@@ -120,7 +130,7 @@ def main():
     ax.set_aspect("equal")
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
-    fig.colorbar(coll, ax=ax, label=args.field + (f"[{args.component}]" if args.component is not None else ""))
+    fig.colorbar(coll, ax=ax, fraction=0.046, pad=0.03, label=args.field + (f"[{args.component}]" if args.component is not None else ""))
     ax.set_title(args.title or os.path.basename(args.file))
     out = args.output or os.path.splitext(os.path.basename(args.file))[0] + f"_{args.field}.png"
     fig.savefig(out, dpi=150, bbox_inches="tight")
