@@ -155,6 +155,15 @@ ausroll_add_check(NAME paraview_vtu_block_press
   ARGS out --expect-cell stress_yy -461.5384615 1e-6 --expect-cell stress_xx 0 1e30
        --expect-point-range displacement 1 -0.0100001 1e-9)
 set_tests_properties(check/paraview_vtu_block_press PROPERTIES SKIP_REGULAR_EXPRESSION "SKIPPED: VTK")
+# scripts/plot_field.py draws a field of that output (reads the .pvd, writes a PNG); runs after
+# the check above, on its output directory.
+add_test(NAME check/plot_field_script
+  COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/scripts/plot_field.py
+          paraview_vtu_block_press/out/solution.pvd stress_yy --warp 10 --edges --mirror x -o plot_field.png
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(check/plot_field_script PROPERTIES LABELS check
+  DEPENDS check/paraview_vtu_block_press REQUIRED_FILES ${CMAKE_CURRENT_BINARY_DIR}/paraview_vtu_block_press/out/solution.pvd
+  PASS_REGULAR_EXPRESSION "wrote plot_field.png")
 
 # ---------------------------------------------------------------- robust stepping
 configure_file(${AUSROLL_CHECKS_DIR}/scenes/thick_cylinder_collapse.prm.in ${CMAKE_CURRENT_BINARY_DIR}/thick_cylinder_collapse.prm @ONLY)
