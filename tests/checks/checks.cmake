@@ -236,3 +236,12 @@ add_test(NAME check/parameters_doc_current
   COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:ausroll> -DDOC=${CMAKE_SOURCE_DIR}/doc/parameters.md
           -DOUT=${CMAKE_CURRENT_BINARY_DIR}/parameters.md -P ${AUSROLL_CHECKS_DIR}/run_doc_check.cmake)
 set_tests_properties(check/parameters_doc_current PROPERTIES LABELS check)
+
+# ---------------------------------------------------------------- parallel consistency
+# Short versions of the forming scenes on 1 and 2 ranks: every history column agrees to 1e-8
+# relative to its largest value (the partition must not change the answer beyond round-off).
+foreach(_scene head_forming_short flat_punch_short cantilever_short)
+  configure_file(${AUSROLL_CHECKS_DIR}/scenes/${_scene}.prm.in ${CMAKE_CURRENT_BINARY_DIR}/${_scene}.prm @ONLY)
+  ausroll_add_parallel_check(NAME ${_scene}_np2 PRM ${CMAKE_CURRENT_BINARY_DIR}/${_scene}.prm
+    HISTORY out/history.csv)
+endforeach()
