@@ -245,3 +245,5 @@ foreach(_scene head_forming_short flat_punch_short cantilever_short)
   ausroll_add_parallel_check(NAME ${_scene}_np2 PRM ${CMAKE_CURRENT_BINARY_DIR}/${_scene}.prm
     HISTORY out/history.csv)
 endforeach()
+ausroll_add_parallel_check(NAME upsetting_short_np2 PRM ${CMAKE_SOURCE_DIR}/tests/upsetting_short.prm
+  HISTORY out/history.csv)
