@@ -292,7 +292,6 @@ TEST(InvoluteGear, ThesisThicknessAndInvoluteNumbers)
   EXPECT_NEAR(alpha_t / deg, 25.3836, 1e-4);
   EXPECT_NEAR(InvoluteGear::involute(alpha_t), 0.031457, 1e-6);
   // Die pitch thickness: standard half circular pitch as well.
-  EXPECT_NEAR(thesis_die().tooth_thickness(thesis_die().pitch_radius()) / mm_per_inch,
-              0.1848,
-              5e-5);
+  EXPECT_NEAR(
+      thesis_die().tooth_thickness(thesis_die().pitch_radius()) / mm_per_inch, 0.1848, 5e-5);
 }
