@@ -91,7 +91,7 @@ TEST(GearToothMesh, RefinedBoundaryOnExactOutline)
           for (unsigned int v = 0; v < 2; ++v)
           {
             const Point<2> x = face->vertex(v);
-            if (id >= 10)
+            if (id >= 10 && id != numbers::flat_manifold_id)
             {
               const unsigned int k = (id - 10) / 10, piece = (id - 10) % 10;
               const double       axis = p.gear_tooth.axis_angle(k);
@@ -107,7 +107,8 @@ TEST(GearToothMesh, RefinedBoundaryOnExactOutline)
                 const Point<2> cs(c[0], side == FlankSide::positive ? c[1] : -c[1]);
                 const Point<2> ca(std::cos(axis) * cs[0] - std::sin(axis) * cs[1],
                                   std::sin(axis) * cs[0] + std::cos(axis) * cs[1]);
-                EXPECT_NEAR(x.distance(ca), fillet, 1e-10 * x.norm());
+                EXPECT_NEAR(x.distance(ca), fillet, 1e-10 * x.norm())
+                    << "teeth " << teeth << " fillet " << fillet << " id " << id;
               }
             }
             else if (id == 1)
@@ -184,7 +185,7 @@ TEST(GearToothMesh, CellQuality)
     {
       fev.reinit(cell);
       for (unsigned int q = 0; q < quad.size(); ++q)
-        EXPECT_GT(determinant(fev.jacobian(q)), 0.);
+        EXPECT_GT(determinant(Tensor<2, 2>(fev.jacobian(q))), 0.);
       // Corner Jacobians of the bilinear cell: cross product of the two edges at each vertex.
       const unsigned int next[4] = {1, 3, 0, 2}; // counter-clockwise neighbour (lexicographic)
       const unsigned int prev[4] = {2, 0, 3, 1};
