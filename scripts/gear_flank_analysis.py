@@ -5,9 +5,10 @@ Usage: gear_flank_analysis.py OUTPUT_DIR [--flank negative|positive] [--plot FIL
                               [--teeth 31] [--diametral-pitch 8.5] [--pressure-angle 22]
                               [--thickness 4.69392] [--axis-angle 90]
 
-Reads every contact_NNNN.csv of OUTPUT_DIR (columns die,s,X,Y,x,y,gap,p_n,...: reference and current
-positions of the contact candidate nodes, i.e. the tooth outline) and, for the nodes whose reference
-position lies on the involute part of the chosen flank, computes per output step
+Reads every output step listed in OUTPUT_DIR/solution.pvd (the VTU files, written with
+`Output/Deformed mesh = true`: current positions x and the nodal fields displacement and
+contact_pressure; reference positions X = x - displacement; needs python3-vtk9) and, for the nodes
+whose reference position lies on the involute part of the chosen flank, computes per output step
 
 * the normal deviation of the current position from the ORIGINAL involute,
   d = r_b (phi - theta_h(r)) for the positive flank and r_b (-phi - theta_h(r)) for the negative one
@@ -28,11 +29,8 @@ flow direction (thesis: towards the tip on the trailing side, away from it on th
 """
 
 import argparse
-import csv
-import glob
 import math
 import os
-import re
 import sys
 
 
@@ -51,38 +49,54 @@ def gear_data(args):
     return rp, rb, rp + m, theta_h
 
 
-def read_contact(path):
-    time = float("nan")
-    rows = []
-    with open(path) as f:
-        first = f.readline()
-        match = re.search(r"time\s*=\s*([-+0-9.eE]+)", first)
-        if match:
-            time = float(match.group(1))
-        for row in csv.DictReader(f):
-            rows.append({k: (float(v) if k != "die" else v) for k, v in row.items()})
-    return time, rows
+def read_vtu_steps(directory):
+    """(step, time, [(X, Y, x, y, p_n)]) for every dataset of solution.pvd (rank-0 pieces merged)."""
+    import xml.etree.ElementTree as ET
+
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    pvd = ET.parse(os.path.join(directory, "solution.pvd")).getroot()
+    steps = []
+    for i, ds in enumerate(pvd.iter("DataSet")):
+        time = float(ds.get("timestep"))
+        pvtu = os.path.join(directory, ds.get("file"))
+        reader = vtk.vtkXMLPUnstructuredGridReader()
+        reader.SetFileName(pvtu)
+        reader.Update()
+        grid = reader.GetOutput()
+        x = vtk_to_numpy(grid.GetPoints().GetData())
+        u = vtk_to_numpy(grid.GetPointData().GetArray("displacement"))
+        pressure = grid.GetPointData().GetArray("contact_pressure")
+        p = vtk_to_numpy(pressure) if pressure is not None else [0.0] * len(x)
+        seen, nodes = set(), []
+        for k in range(len(x)):
+            key = (round(float(x[k][0]), 5), round(float(x[k][1]), 5))
+            if key in seen:
+                continue
+            seen.add(key)
+            X, Y = float(x[k][0] - u[k][0]), float(x[k][1] - u[k][1])
+            nodes.append((X, Y, float(x[k][0]), float(x[k][1]), float(p[k])))
+        steps.append((i, time, nodes))
+    return steps
 
 
 def analyse(args):
     rp, rb, rt, theta_h = gear_data(args)
     axis = math.radians(args.axis_angle)
     sign = 1.0 if args.flank == "positive" else -1.0
-    files = sorted(glob.glob(os.path.join(args.directory, "contact_*.csv")))
-    if not files:
-        raise SystemExit(f"gear_flank_analysis.py: no contact_*.csv in {args.directory}")
+    if not os.path.exists(os.path.join(args.directory, "solution.pvd")):
+        raise SystemExit(f"gear_flank_analysis.py: no solution.pvd in {args.directory}")
     results = []
-    for path in files:
-        step = int(re.search(r"contact_(\d+)\.csv", path).group(1))
-        time, rows = read_contact(path)
-        for n in rows:
-            X, Y, x, y = n["X"], n["Y"], n["x"], n["y"]
+    for step, time, nodes in read_vtu_steps(args.directory):
+        for X, Y, x, y, p_n in nodes:
             R = math.hypot(X, Y)
             phi_ref = math.remainder(math.atan2(Y, X) - axis, 2.0 * math.pi)
             # reference point on the involute of the chosen flank (not the fillet, lands, radial part)
             if R < rb * (1.0 + 1e-9) or R > rt * (1.0 - 1e-9):
                 continue
-            if abs(sign * phi_ref - theta_h(R)) * R > 1e-6 * R:
+            # VTU coordinates are single precision: 1e-6 relative is about 5e-5 mm
+            if abs(sign * phi_ref - theta_h(R)) * R > args.tolerance:
                 continue
             if R < args.min_radius:
                 continue
@@ -97,7 +111,7 @@ def analyse(args):
             t = (er[0] - sign * u * et[0], er[1] - sign * u * et[1])
             tn = math.hypot(*t)
             u_t = ((x - X) * t[0] + (y - Y) * t[1]) / tn
-            results.append((step, time, R, u, d_n, u_t, n["p_n"]))
+            results.append((step, time, R, u, d_n, u_t, p_n))
     results.sort()
     return results, rp
 
@@ -162,6 +176,8 @@ def main():
     p.add_argument("--thickness", type=float, default=4.69392)
     p.add_argument("--axis-angle", type=float, default=90.0)
     p.add_argument("--min-radius", type=float, default=0.0)
+    p.add_argument("--tolerance", type=float, default=2e-4,
+                   help="distance (mm) of a reference node from the involute to count as flank node")
     args = p.parse_args()
     results, rp = analyse(args)
     if not results:

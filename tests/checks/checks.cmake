@@ -219,3 +219,20 @@ ausroll_add_script_check(NAME cantilever_large_deflection
 # outside fold-over events (0.5 %), force and bulge at 30 % vs the Q2 16x12 reference (2 %, 1 %),
 # small strain underestimates the load (> 20 %). About 25 s.
 ausroll_add_script_check(NAME upsetting SCRIPT ${AUSROLL_CHECKS_DIR}/check_upsetting.py)
+
+# ---------------------------------------------------------------- gear rolling
+configure_file(${AUSROLL_CHECKS_DIR}/scenes/gear_rolling_short.prm.in ${CMAKE_CURRENT_BINARY_DIR}/gear_rolling_short.prm @ONLY)
+# Gear tooth rolled against the rigid involute die (prm/gear_rolling.prm, frictionless, feed and
+# 10 rolling increments). Reference 1 (exact for rigid conjugate involutes): the die force acts
+# along the line of action, F_y / F_x = tan(22 deg + theta_G(t)) in the non-rotating gear frame;
+# tolerance 0.02 (the deformed flank tilts the contact normal; measured worst 0.008 over the
+# whole pass). Reference 2 (bounds): F_x < 0 and 50 <= |F| <= 1340 N/mm: the 0.1 mm feed gives a
+# normal interference of about 0.037 mm; the upper bound is the plane-strain Prandtl pressure
+# (2 + pi) sigma_y / sqrt(3) = 736 MPa over the geometric contact chord 2 sqrt(2 R delta) = 1.8 mm
+# (R = 11.2 mm the relative curvature radius of the flanks at the pitch point); the lower bound
+# excludes a lost contact (measured: about 220 N/mm).
+ausroll_add_check(NAME gear_rolling_short
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/gear_rolling_short.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_gear_rolling.py
+  ARGS out --direction 1 --theta0 -8 --rate 14 --t-roll 0.1 --ratio-tol 0.02
+       --force-range 50 1340)
