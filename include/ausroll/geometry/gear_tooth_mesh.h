@@ -73,8 +73,10 @@ namespace ausroll::geometry
 
   /**
    * Build the coarse mesh of the tooth sector into the empty @p coarse: vertices on the exact
-   * outline, boundary ids and manifold ids as documented in this file. Every tooth has 4 rows
-   * of 2 x 2 cells in the tooth above the fillet start and up to 4 columns in the rim.
+   * outline, boundary ids and manifold ids as documented in this file. Every half tooth has 4 rows
+   * of 2 cells above the fillet start and up to 4 columns (below the tooth, under the fillet,
+   * under the root land) of rows growing by 1.6 towards the inner arc in the rim (56 cells per
+   * tooth for the thesis gear with a fillet).
    */
   void create_gear_tooth_mesh(const GearToothParameters &parameters,
                               dealii::Triangulation<2>  &coarse);
