@@ -9,14 +9,15 @@ namespace ausroll::geometry
   void GeometryParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
-    prm.declare_entry("Type",
-                      "quarter ring",
-                      Patterns::Selection("quarter ring|rectangle|quarter disk|mesh file"),
-                      "Workpiece shape. Boundary ids: quarter ring: 0 inner arc, 1 outer arc, "
-                      "2 edge on the x axis, 3 edge on the y axis; rectangle: 0 left, 1 right, "
-                      "2 bottom, 3 top; quarter disk (the quarter below and right of the centre): "
-                      "0 arc, 1 top edge, 2 edge on the vertical axis; mesh file: the ids stored "
-                      "in the file.");
+    prm.declare_entry(
+        "Type",
+        "quarter ring",
+        Patterns::Selection("quarter ring|rectangle|quarter disk|mesh file|gear tooth"),
+        "Workpiece shape. Boundary ids: quarter ring: 0 inner arc, 1 outer arc, "
+        "2 edge on the x axis, 3 edge on the y axis; rectangle: 0 left, 1 right, "
+        "2 bottom, 3 top; quarter disk (the quarter below and right of the centre): "
+        "0 arc, 1 top edge, 2 edge on the vertical axis; mesh file: the ids stored "
+        "in the file; gear tooth: 0 tooth outline, 1 inner arc, 2 side cuts.");
     prm.declare_entry("Global refinements",
                       "0",
                       Patterns::Integer(0, 12),
@@ -61,6 +62,8 @@ namespace ausroll::geometry
         "Angular cells", "4", Patterns::Integer(1), "Coarse cells along the quarter.");
     prm.leave_subsection();
 
+    GearToothParameters::declare_parameters(prm);
+
     prm.enter_subsection("Rectangle");
     prm.declare_entry(
         "Lower left corner", "0, 0", Patterns::List(Patterns::Double(), 2, 2), "x, y (mm).");
@@ -80,6 +83,7 @@ namespace ausroll::geometry
     type = t == "quarter ring"   ? WorkpieceType::quarter_ring
            : t == "rectangle"    ? WorkpieceType::rectangle
            : t == "quarter disk" ? WorkpieceType::quarter_disk
+           : t == "gear tooth"   ? WorkpieceType::gear_tooth
                                  : WorkpieceType::mesh_file;
     refinement_point = parse_point<2>(prm.get("Refinement point"), "Geometry/Refinement point");
     refinement_radius = prm.get_double("Refinement radius");
@@ -101,6 +105,8 @@ namespace ausroll::geometry
     angular_cells = prm.get_integer("Angular cells");
     prm.leave_subsection();
 
+    gear_tooth.parse_parameters(prm);
+
     prm.enter_subsection("Rectangle");
     lower_left
         = parse_point<2>(prm.get("Lower left corner"), "Geometry/Rectangle/Lower left corner");
@@ -120,5 +126,7 @@ namespace ausroll::geometry
               "must lie above and right of Lower left corner");
     if (type == WorkpieceType::mesh_file)
       require(!mesh_file.empty(), "Geometry/Mesh file", "must be set when Type = mesh file");
+    if (type == WorkpieceType::gear_tooth)
+      gear_tooth.inner_radius(); // builds the gear: throws for inconsistent Gear tooth entries
   }
 } // namespace ausroll::geometry

@@ -1,4 +1,5 @@
 #include <ausroll/core/exceptions.h>
+#include <ausroll/geometry/gear_tooth_mesh.h>
 #include <ausroll/geometry/workpiece.h>
 
 #include <deal.II/base/numbers.h>
@@ -164,6 +165,8 @@ namespace ausroll::geometry
         quarter_ring(parameters, coarse);
       else if (parameters.type == WorkpieceType::quarter_disk)
         quarter_disk(parameters, coarse);
+      else if (parameters.type == WorkpieceType::gear_tooth)
+        create_gear_tooth_mesh(parameters.gear_tooth, coarse);
       else
         rectangle(parameters, coarse);
     }
@@ -180,6 +183,8 @@ namespace ausroll::geometry
       }
       if (parameters.type == WorkpieceType::quarter_disk)
         attach_disk_manifolds(parameters, triangulation);
+      if (parameters.type == WorkpieceType::gear_tooth)
+        attach_gear_tooth_manifolds(parameters.gear_tooth, triangulation);
     }
     if (!refine)
       return;

@@ -247,3 +247,41 @@ foreach(_scene head_forming_short flat_punch_short cantilever_short)
 endforeach()
 ausroll_add_parallel_check(NAME upsetting_short_np2 PRM ${CMAKE_SOURCE_DIR}/tests/upsetting_short.prm
   HISTORY out/history.csv)
+
+# ---------------------------------------------------------------- gear rolling
+configure_file(${AUSROLL_CHECKS_DIR}/scenes/gear_rolling_short.prm.in ${CMAKE_CURRENT_BINARY_DIR}/gear_rolling_short.prm @ONLY)
+# Gear tooth rolled against the rigid involute die (prm/gear_rolling.prm, frictionless, feed and
+# 10 rolling increments). Reference 1 (exact for rigid conjugate involutes): the die force acts
+# along the line of action, F_y / F_x = tan(22 deg + theta_G(t)) in the non-rotating gear frame;
+# tolerance 0.02 (the deformed flank tilts the contact normal; measured worst 0.008 over the
+# whole pass). Reference 2 (bounds): F_x < 0 and 50 <= |F| <= 1340 N/mm: the 0.1 mm feed gives a
+# normal interference of about 0.037 mm; the upper bound is the plane-strain Prandtl pressure
+# (2 + pi) sigma_y / sqrt(3) = 736 MPa over the geometric contact chord 2 sqrt(2 R delta) = 1.8 mm
+# (R = 11.2 mm the relative curvature radius of the flanks at the pitch point); the lower bound
+# excludes a lost contact (measured: about 220 N/mm).
+ausroll_add_check(NAME gear_rolling_short
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/gear_rolling_short.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_gear_rolling.py
+  ARGS out --direction 1 --theta0 -8 --rate 14 --t-roll 0.1 --ratio-tol 0.02
+       --force-range 50 1340)
+
+# Flow direction (shipped Coulomb die, mu = 0.1): while the flanks slide, the friction part of the
+# die force is F_t / F_n = mu sign(theta_G - theta_p) (tangent towards the tip; theta_p the
+# revolution angle of contact at the pitch point, where the sliding velocity changes sign; rigid
+# kinematics, see check_gear_rolling.py). On the trailing side below the pitch point and on the
+# approach side above it the friction drags the flank material towards the root, i.e. away from
+# the pitch line (trailing) and towards it (approach), as in thesis figure 1.4. Tolerance 0.012:
+# full slip gives exactly mu; measured 0.093 .. 0.105 over the whole passes.
+foreach(_scene gear_rolling_friction_short gear_rolling_approach_short)
+  configure_file(${AUSROLL_CHECKS_DIR}/scenes/${_scene}.prm.in ${CMAKE_CURRENT_BINARY_DIR}/${_scene}.prm @ONLY)
+endforeach()
+ausroll_add_check(NAME gear_rolling_flow_trailing
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/gear_rolling_friction_short.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_gear_rolling.py
+  ARGS out --direction 1 --theta0 -8 --rate 14 --t-roll 0.1 --no-ratio --mu 0.1
+       --force-range 50 1340)
+ausroll_add_check(NAME gear_rolling_flow_approach
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/gear_rolling_approach_short.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_gear_rolling.py
+  ARGS out --direction -1 --theta0 -6 --rate 14 --t-roll 0.1 --no-ratio --mu 0.1
+       --force-range 50 1340)

@@ -268,3 +268,30 @@ TEST(InvoluteGear, InvalidInputThrows)
   thick.pitch_tooth_thickness = 4.0; // more than the circular pitch pi
   EXPECT_THROW(InvoluteGear(20, 1.0, 20.0 * deg, thick), std::runtime_error);
 }
+
+// Remaining thesis numbers: the 0.1848" pitch thickness is the standard half circular pitch
+// pi / (2 P_d) = 0.18480"; the workpiece outside diameter (not printed in the thesis) is the
+// full-depth (z + 2) / P_d = 3.8824"; the pressure angle at the pitch circle is 22 degrees, and
+// the thickness at the base circle follows from the involute function: s_b = 2 r_b (s_p / (2 r_p)
+// + inv(22 deg)) = 0.23915" (closed form evaluated independently with inv(22 deg) = 0.0200538).
+TEST(InvoluteGear, ThesisThicknessAndInvoluteNumbers)
+{
+  const InvoluteGear g = thesis_workpiece();
+  EXPECT_NEAR(g.pitch_tooth_thickness() / mm_per_inch, M_PI / (2.0 * 8.5), 1e-12);
+  EXPECT_NEAR(g.pitch_tooth_thickness() / mm_per_inch, 0.1848, 5e-5);
+  EXPECT_NEAR(inches(g.tip_radius()), 3.8824, 1e-4);
+  EXPECT_NEAR(g.pressure_angle_at(g.pitch_radius()), 22.0 * deg, 1e-12);
+  EXPECT_NEAR(g.roll_angle_at(g.pitch_radius()), std::tan(22.0 * deg), 1e-12);
+  EXPECT_NEAR(g.tooth_thickness(g.base_radius()) / mm_per_inch, 0.23915, 1e-5);
+  EXPECT_NEAR(g.half_thickness_angle(g.base_radius()),
+              0.1848 * mm_per_inch / (2.0 * g.pitch_radius()) + 0.0200538,
+              2e-6);
+  // The involute function at the pressure angle of the die tip circle (OD 6.882"):
+  // alpha_t = acos(6.2176 / 6.882) = 25.3836 deg, inv = tan - angle = 0.031457.
+  const double alpha_t = std::acos(6.2176 / 6.882);
+  EXPECT_NEAR(alpha_t / deg, 25.3836, 1e-4);
+  EXPECT_NEAR(InvoluteGear::involute(alpha_t), 0.031457, 1e-6);
+  // Die pitch thickness: standard half circular pitch as well.
+  EXPECT_NEAR(
+      thesis_die().tooth_thickness(thesis_die().pitch_radius()) / mm_per_inch, 0.1848, 5e-5);
+}

@@ -4,6 +4,8 @@
  */
 #pragma once
 
+#include <ausroll/geometry/gear_tooth_mesh.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
@@ -18,7 +20,8 @@ namespace ausroll::geometry
     quarter_ring, ///< quarter of an annulus (thick cylinder); subsection `Quarter ring`
     rectangle,    ///< axis-parallel rectangle (slab, block, cantilever, upsetting); `Rectangle`
     quarter_disk, ///< lower-right quarter of a disk (cylinder on a flat: Hertz); `Quarter disk`
-    mesh_file     ///< a mesh read from `Mesh file` (Gmsh .msh or UCD .inp)
+    mesh_file,    ///< a mesh read from `Mesh file` (Gmsh .msh or UCD .inp)
+    gear_tooth    ///< involute gear tooth sector with rim; subsection `Gear tooth`
   };
 
   /**
@@ -44,6 +47,9 @@ namespace ausroll::geometry
     // subsection `Quarter disk`
     dealii::Point<2> disk_center{0., 1.}; ///< `Center`
     double           disk_radius = 1.;    ///< `Radius`
+
+    // subsection `Gear tooth`
+    GearToothParameters gear_tooth; ///< involute tooth sector (Type = gear tooth)
 
     // local refinement towards a point (any shape)
     dealii::Point<2> refinement_point{0., 0.}; ///< `Refinement point`

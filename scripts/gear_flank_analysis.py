@@ -1,0 +1,197 @@
+#!/usr/bin/env python3
+"""Deformed gear flank against the original involute (scene prm/gear_rolling*.prm).
+
+Usage: gear_flank_analysis.py OUTPUT_DIR [--flank negative|positive] [--plot FILE.png]
+                              [--teeth 31] [--diametral-pitch 8.5] [--pressure-angle 22]
+                              [--thickness 4.69392] [--axis-angle 90]
+
+Reads every output step listed in OUTPUT_DIR/solution.pvd (the VTU files, written with
+`Output/Deformed mesh = true`: current positions x and the nodal fields displacement and
+contact_pressure; reference positions X = x - displacement; needs python3-vtk9) and, for the nodes
+whose reference position lies on the involute part of the chosen flank, computes per output step
+
+* the normal deviation of the current position from the ORIGINAL involute,
+  d = r_b (phi - theta_h(r)) for the positive flank and r_b (-phi - theta_h(r)) for the negative one
+  (phi the polar angle about the gear centre measured from the tooth axis, r = |x|). This is exact:
+  the normal of an involute at any point is the tangent to the base circle, and the distance of a
+  point from the involute along that tangent equals r_b times its angular offset. d > 0: the
+  surface lies outside the original tooth (material piled up), d < 0: inside (material removed or
+  pressed in);
+* the tangential displacement u_t = (x - X) . t of the node along the flank, t the unit tangent at
+  the reference point pointing towards the tip (u_t > 0: material moved towards the tip);
+* the contact pressure p_n.
+
+Writes OUTPUT_DIR/flank_deviation.csv (step,time,R,roll_angle,d_n,u_t,p_n; R and the roll angle
+u = sqrt(R^2/r_b^2 - 1) of the reference point) and, with --plot, a PNG of d_n and u_t against R
+for every step. Prints a summary: the final extreme deviations and the mean u_t over the flank near
+the pitch point (|R - r_p| < 1 mm) and over the upper flank (R > r_p + 1 mm), whose signs give the
+flow direction (thesis: towards the tip on the trailing side, away from it on the approach side).
+"""
+
+import argparse
+import math
+import os
+import sys
+
+
+def gear_data(args):
+    m = 25.4 / args.diametral_pitch
+    alpha = math.radians(args.pressure_angle)
+    rp = 0.5 * m * args.teeth
+    rb = rp * math.cos(alpha)
+    sp = args.thickness if args.thickness > 0 else 0.5 * math.pi * m
+    inv_alpha = math.tan(alpha) - alpha
+
+    def theta_h(r):
+        u = math.sqrt(max(r * r / (rb * rb) - 1.0, 0.0))
+        return sp / (2.0 * rp) + inv_alpha - (u - math.atan(u))
+
+    return rp, rb, rp + m, theta_h
+
+
+def read_vtu_steps(directory):
+    """(step, time, [(X, Y, x, y, p_n)]) for every dataset of solution.pvd (rank-0 pieces merged)."""
+    import xml.etree.ElementTree as ET
+
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    pvd = ET.parse(os.path.join(directory, "solution.pvd")).getroot()
+    steps = []
+    for i, ds in enumerate(pvd.iter("DataSet")):
+        time = float(ds.get("timestep"))
+        pvtu = os.path.join(directory, ds.get("file"))
+        reader = vtk.vtkXMLPUnstructuredGridReader()
+        reader.SetFileName(pvtu)
+        reader.Update()
+        grid = reader.GetOutput()
+        x = vtk_to_numpy(grid.GetPoints().GetData())
+        u = vtk_to_numpy(grid.GetPointData().GetArray("displacement"))
+        pressure = grid.GetPointData().GetArray("contact_pressure")
+        p = vtk_to_numpy(pressure) if pressure is not None else [0.0] * len(x)
+        seen, nodes = set(), []
+        for k in range(len(x)):
+            key = (round(float(x[k][0]), 5), round(float(x[k][1]), 5))
+            if key in seen:
+                continue
+            seen.add(key)
+            X, Y = float(x[k][0] - u[k][0]), float(x[k][1] - u[k][1])
+            nodes.append((X, Y, float(x[k][0]), float(x[k][1]), float(p[k])))
+        steps.append((i, time, nodes))
+    return steps
+
+
+def analyse(args):
+    rp, rb, rt, theta_h = gear_data(args)
+    axis = math.radians(args.axis_angle)
+    sign = 1.0 if args.flank == "positive" else -1.0
+    if not os.path.exists(os.path.join(args.directory, "solution.pvd")):
+        raise SystemExit(f"gear_flank_analysis.py: no solution.pvd in {args.directory}")
+    results = []
+    for step, time, nodes in read_vtu_steps(args.directory):
+        for X, Y, x, y, p_n in nodes:
+            R = math.hypot(X, Y)
+            phi_ref = math.remainder(math.atan2(Y, X) - axis, 2.0 * math.pi)
+            # reference point on the involute of the chosen flank (not the fillet, lands, radial part)
+            if R < rb * (1.0 + 1e-9) or R > rt * (1.0 - 1e-9):
+                continue
+            # VTU coordinates are single precision: 1e-6 relative is about 5e-5 mm
+            if abs(sign * phi_ref - theta_h(R)) * R > args.tolerance:
+                continue
+            if R < args.min_radius:
+                continue
+            r = math.hypot(x, y)
+            phi = math.remainder(math.atan2(y, x) - axis, 2.0 * math.pi)
+            d_n = rb * (sign * phi - theta_h(r)) if r > rb else float("nan")
+            # tangent towards the tip at the reference point: e_r - u e_theta (positive flank)
+            u = math.sqrt(R * R / (rb * rb) - 1.0)
+            th = axis + sign * theta_h(R)
+            er = (math.cos(th), math.sin(th))
+            et = (-math.sin(th), math.cos(th))
+            t = (er[0] - sign * u * et[0], er[1] - sign * u * et[1])
+            tn = math.hypot(*t)
+            u_t = ((x - X) * t[0] + (y - Y) * t[1]) / tn
+            results.append((step, time, R, u, d_n, u_t, p_n))
+    results.sort()
+    return results, rp
+
+
+def summary(results, rp):
+    last = max(r[0] for r in results)
+    final = [r for r in results if r[0] == last]
+    near = [r[5] for r in final if abs(r[2] - rp) < 1.0]
+    upper = [r[5] for r in final if r[2] > rp + 1.0]
+    mean = lambda v: sum(v) / len(v) if v else float("nan")
+    out = {
+        "step": last,
+        "nodes": len(final),
+        "d_n_min": min(r[4] for r in final),
+        "d_n_max": max(r[4] for r in final),
+        "u_t_pitch": mean(near),
+        "u_t_upper": mean(upper),
+        "p_n_max_all_steps": max(r[6] for r in results),
+    }
+    return out
+
+
+def plot(results, rp, filename, title):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    steps = sorted({r[0] for r in results})
+    fig, axes = plt.subplots(3, 1, figsize=(7, 9), sharex=True)
+    cmap = plt.get_cmap("viridis")
+    for i, s in enumerate(steps):
+        rows = [r for r in results if r[0] == s]
+        c = cmap(i / max(len(steps) - 1, 1))
+        label = f"t = {rows[0][1]:.2f}" if i in (0, len(steps) - 1) else None
+        R = [r[2] for r in rows]
+        axes[0].plot(R, [1000 * r[4] for r in rows], color=c, label=label)
+        axes[1].plot(R, [1000 * r[5] for r in rows], color=c)
+        axes[2].plot(R, [r[6] for r in rows], color=c)
+    for ax in axes:
+        ax.axvline(rp, color="gray", ls=":", lw=1)
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("normal deviation d_n (um)")
+    axes[1].set_ylabel("tangential displ. u_t (um)\n(> 0: towards the tip)")
+    axes[2].set_ylabel("contact pressure p_n (MPa)")
+    axes[2].set_xlabel("reference radius R (mm); dotted: pitch circle")
+    axes[0].legend()
+    axes[0].set_title(title)
+    fig.tight_layout()
+    fig.savefig(filename, dpi=110)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("directory")
+    p.add_argument("--flank", choices=["negative", "positive"], default="negative")
+    p.add_argument("--plot")
+    p.add_argument("--title", default="gear flank")
+    p.add_argument("--teeth", type=int, default=31)
+    p.add_argument("--diametral-pitch", type=float, default=8.5)
+    p.add_argument("--pressure-angle", type=float, default=22.0)
+    p.add_argument("--thickness", type=float, default=4.69392)
+    p.add_argument("--axis-angle", type=float, default=90.0)
+    p.add_argument("--min-radius", type=float, default=0.0)
+    p.add_argument("--tolerance", type=float, default=2e-4,
+                   help="distance (mm) of a reference node from the involute to count as flank node")
+    args = p.parse_args()
+    results, rp = analyse(args)
+    if not results:
+        raise SystemExit("gear_flank_analysis.py: no flank nodes found")
+    with open(os.path.join(args.directory, "flank_deviation.csv"), "w") as f:
+        f.write("step,time,R,roll_angle,d_n,u_t,p_n\n")
+        for r in results:
+            f.write(",".join(f"{v:.10g}" for v in r) + "\n")
+    s = summary(results, rp)
+    print(" ".join(f"{k}={v:.6g}" if isinstance(v, float) else f"{k}={v}" for k, v in s.items()))
+    if args.plot:
+        plot(results, rp, args.plot, args.title)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
