@@ -480,7 +480,9 @@ namespace ausroll::contact
     for (unsigned int k = 0; k < dies.size(); ++k)
     {
       Tensor<1, dim> force;
+      const DiePose  pose = dies[k]->pose(time);
       double         n_stick = 0, n_slip = 0, s_min = infinity, s_max = -infinity;
+      double         x_min = infinity, x_max = -infinity; // die-frame x of closed nodes
       for (const Node &n : nodes)
         if (n.owned && n.status != ContactStatus::open && n.die == static_cast<int>(k))
         {
@@ -488,9 +490,11 @@ namespace ausroll::contact
           (n.status == ContactStatus::stick ? n_stick : n_slip) += 1;
           s_min = std::min(s_min, n.projection.s);
           s_max = std::max(s_max, n.projection.s);
+          const double x_local = pose.to_local(Point<2>(n.x[0], n.x[1]))[0];
+          x_min = std::min(x_min, x_local);
+          x_max = std::max(x_max, x_local);
         }
       const std::string p = "die_" + dies[k]->name + "_";
-      const DiePose     pose = dies[k]->pose(time);
       for (unsigned int d = 0; d < dim; ++d)
         columns.emplace_back(p + "force_" + std::string(1, "xyz"[d]),
                              Utilities::MPI::sum(force[d], comm));
@@ -502,6 +506,9 @@ namespace ausroll::contact
       s_min = Utilities::MPI::min(s_min, comm);
       s_max = Utilities::MPI::max(s_max, comm);
       columns.emplace_back(p + "contact_length", s_max >= s_min ? s_max - s_min : 0.);
+      x_min = Utilities::MPI::min(x_min, comm);
+      x_max = Utilities::MPI::max(x_max, comm);
+      columns.emplace_back(p + "contact_width", x_max >= x_min ? x_max - x_min : 0.);
     }
     return columns;
   }
@@ -693,7 +700,7 @@ namespace ausroll::contact
               = dies[k]->die_surface().project(dies[k]->pose(times.front()).to_local(to_2d(n.X)));
           if (p0.gap < deepest)
           {
-            deepest      = p0.gap;
+            deepest = p0.gap;
             deepest_node = to_2d(n.X);
           }
           for (const double t : times)
@@ -704,7 +711,8 @@ namespace ausroll::contact
           }
         }
       if (Utilities::MPI::sum(n_candidates, comm) == 0)
-        throw InputError(path + "/Candidate boundaries: no workpiece boundary node carries these ids");
+        throw InputError(path
+                         + "/Candidate boundaries: no workpiece boundary node carries these ids");
       const double global_deepest = Utilities::MPI::min(deepest, comm);
       if (global_deepest < -0.05 * workpiece_size)
       {
