@@ -40,8 +40,9 @@ class Run:
         return len(self.rows) - 1
 
 
-def run_variant(ausroll, work, base, name, overrides, reuse=False):
-    """Run prm/<base>.prm with @p overrides ("Section/Entry = value") in work/name."""
+def run_variant(ausroll, work, base, name, overrides, reuse=False, timeout=None):
+    """Run prm/<base>.prm with @p overrides ("Section/Entry = value") in work/name; a run that
+    takes longer than @p timeout seconds is stopped (ok = False, the history so far is kept)."""
     out = os.path.join(work, name)
     os.makedirs(out, exist_ok=True)
     prm = os.path.join(work, name + ".prm")
@@ -57,14 +58,18 @@ def run_variant(ausroll, work, base, name, overrides, reuse=False):
                     "Output/Write VTU = false", "Output/Verbosity = quiet"] + overrides, check=True)
     before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime
     start = time.time()
-    result = subprocess.run([ausroll, prm], capture_output=True, text=True)
+    try:
+        result = subprocess.run([ausroll, prm], capture_output=True, text=True, timeout=timeout)
+        log_text, ok = result.stdout + result.stderr, result.returncode == 0
+        if not ok:
+            print(f"  {name}: ausroll exit {result.returncode}: {result.stderr.strip()[-300:]}")
+    except subprocess.TimeoutExpired:
+        log_text, ok = f"stopped after {timeout} s\n", False
+        print(f"  {name}: stopped after {timeout} s")
     wall = time.time() - start
     cpu = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime - before
     with open(os.path.join(out, "run.log"), "w") as log:
-        log.write(result.stdout + result.stderr)
-    ok = result.returncode == 0
-    if not ok:
-        print(f"  {name}: ausroll exit {result.returncode}: {result.stderr.strip()[-300:]}")
+        log.write(log_text)
     rows = list(csv.DictReader(open(history))) if os.path.exists(history) else []
     with open(timing, "w") as f:
         f.write(f"{cpu} {wall} {int(ok)}\n")
