@@ -89,6 +89,7 @@ def main():
         return r
 
     records, runs = [], {}
+    full = run("indentation", "indentation_full", [])  # the shipped scene, to d = 1 mm
     half = ["Loading/End time = 0.5"]
     reference = run("indentation", "indentation_reference", half + ["Loading/Number of steps = 20"])
     ref_d, ref_f, _ = force_depth(reference)
@@ -135,13 +136,13 @@ def main():
                                               punch_load, "x"):
         print(f"  P = {P:8.1f}: a = {fit[1]:.4f} (Hertz {ref[0]:.4f}, {ea:+.2%}), "
               f"p0 = {fit[0]:.1f} (Hertz {ref[1]:.1f}, {ep:+.2%})")
-    d, f, w = force_depth(runs["indentation", "active set"])
+    d, f, w = force_depth(full)
     p_lim = (2 + math.pi) * SIGMA_Y / math.sqrt(3)
     print("Elastic-plastic indentation (active set): depth, force (half model), a, p_m / (2+pi)k")
     for di, fi, wi in zip(d, f, w):
         if wi > 0:
             print(f"  {di:6.3f} {fi:10.1f} {wi:7.3f} {fi / wi / p_lim:7.3f}")
-    figures(a.figures, runs, reference)
+    figures(a.figures, runs, reference, full)
     return 0
 
 
@@ -162,7 +163,7 @@ def pressure_plot(ax, table, coordinate, title):
     ax.legend(fontsize=8)
 
 
-def figures(directory, runs, reference):
+def figures(directory, runs, reference, full):
     plt = runner.pyplot()
     if plt is None:
         return
@@ -182,14 +183,14 @@ def figures(directory, runs, reference):
 
     p_lim = (2 + math.pi) * SIGMA_Y / math.sqrt(3)
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4.2))
+    d, f, w = force_depth(full)
+    ax1.plot(d, [2 * x / 1000 for x in f], "k.-", ms=3, lw=0.8, label="prm/indentation.prm (active set)")
+    ax2.plot(d, [x / wi / p_lim if wi > 0 else math.nan for x, wi in zip(f, w)], "k.-", ms=3,
+             lw=0.8, label="prm/indentation.prm (active set)")
     for i, strategy in enumerate(STRATEGIES):
         d, f, w = force_depth(runs["indentation", strategy])
-        ax1.plot(d, [2 * x / 1000 for x in f], "o-" if i == 0 else "x--", ms=3,
-                 label=f"{strategy}")
-        ax2.plot(d, [x / wi / p_lim if wi > 0 else math.nan for x, wi in zip(f, w)],
-                 "o-" if i == 0 else "x--", ms=3, label=strategy)
-    d, f, w = force_depth(reference)
-    ax1.plot(d, [2 * x / 1000 for x in f], "k-", lw=0.7, label="active set, 20 steps (reference)")
+        ax1.plot(d, [2 * x / 1000 for x in f], "o" if i == 0 else "x", ms=4,
+                 label=f"{strategy}, 10 steps to 0.25 mm")
     ax1.set_xlabel("depth d (mm)")
     ax1.set_ylabel("punch force P (kN per mm, whole punch)")
     ax1.grid(True, lw=0.3)
@@ -204,7 +205,7 @@ def figures(directory, runs, reference):
     fig.savefig(os.path.join(directory, "indentation_force_depth.png"), dpi=110)
 
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
-    d, f, w = force_depth(runs["indentation", "active set"])
+    d, f, w = force_depth(full)
     ax.plot(d, w, "o-", ms=3, label="elastic-plastic, mu = 0.3")
     de, fe, we = force_depth(runs["indentation_elastic", "active set"])
     ax.plot(de, we, "s-", ms=3, label="elastic, frictionless")
