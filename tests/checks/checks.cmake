@@ -238,7 +238,8 @@ ausroll_add_check(NAME indentation_elastic_hertz
 # from d = 0.15 mm (a >= 1.4 mm, fully plastic: E a / (sigma_y R) >= 40) the mean pressure F / a
 # is within 12 % of the flat-punch limit (2 + pi) k = 2077.95 MPa (Prandtl, an independent
 # slip-line result). Why 12 %: a is the extent of the closed nodes, which moves in jumps of the
-# node spacing (0.16 mm, up to 10 % of a), and a cylinder is not exactly flat; observed 0.88-0.98.
+# node spacing (0.16 mm, up to 10 % of a), and a cylinder is not exactly flat; observed 0.91-0.98
+# (also on the full run to d = 1 mm: doc/scenes/indentation.md).
 ausroll_add_check(NAME indentation_force_depth
   PRM ${CMAKE_CURRENT_BINARY_DIR}/indentation_half.prm
   CHECK ${AUSROLL_CHECKS_DIR}/check_indentation.py
