@@ -470,7 +470,9 @@ namespace ausroll::contact
     for (unsigned int k = 0; k < dies.size(); ++k)
     {
       Tensor<1, dim> force;
+      const DiePose  pose = dies[k]->pose(time);
       double         n_stick = 0, n_slip = 0, s_min = infinity, s_max = -infinity;
+      double         x_min = infinity, x_max = -infinity; // die-frame x of closed nodes
       for (const Node &n : nodes)
         if (n.owned && n.status != ContactStatus::open && n.die == static_cast<int>(k))
         {
@@ -478,9 +480,11 @@ namespace ausroll::contact
           (n.status == ContactStatus::stick ? n_stick : n_slip) += 1;
           s_min = std::min(s_min, n.projection.s);
           s_max = std::max(s_max, n.projection.s);
+          const double x_local = pose.to_local(Point<2>(n.x[0], n.x[1]))[0];
+          x_min = std::min(x_min, x_local);
+          x_max = std::max(x_max, x_local);
         }
       const std::string p = "die_" + dies[k]->name + "_";
-      const DiePose     pose = dies[k]->pose(time);
       for (unsigned int d = 0; d < dim; ++d)
         columns.emplace_back(p + "force_" + std::string(1, "xyz"[d]),
                              Utilities::MPI::sum(force[d], comm));
@@ -492,6 +496,9 @@ namespace ausroll::contact
       s_min = Utilities::MPI::min(s_min, comm);
       s_max = Utilities::MPI::max(s_max, comm);
       columns.emplace_back(p + "contact_length", s_max >= s_min ? s_max - s_min : 0.);
+      x_min = Utilities::MPI::min(x_min, comm);
+      x_max = Utilities::MPI::max(x_max, comm);
+      columns.emplace_back(p + "contact_width", x_max >= x_min ? x_max - x_min : 0.);
     }
     return columns;
   }

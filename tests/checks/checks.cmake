@@ -285,3 +285,31 @@ ausroll_add_check(NAME gear_rolling_flow_approach
   CHECK ${AUSROLL_CHECKS_DIR}/check_gear_rolling.py
   ARGS out --direction -1 --theta0 -6 --rate 14 --t-roll 0.1 --no-ratio --mu 0.1
        --force-range 50 1340)
+
+# ---------------------------------------------------------------- cylindrical punch indentation
+foreach(_scene indentation_elastic_quiet indentation_half indentation_short)
+  configure_file(${AUSROLL_CHECKS_DIR}/scenes/${_scene}.prm.in ${CMAKE_CURRENT_BINARY_DIR}/${_scene}.prm @ONLY)
+endforeach()
+# Frictionless elastic indentation (prm/indentation_elastic.prm): a and p0 from the fit of the
+# nodal pressures within 1 % of plane-strain Hertz for the measured punch force P = -2 F_y (half
+# model) at every step. The scene's mesh gives -0.2 ... -0.8 %; finer meshes converge to about
+# -0.7 % (Hertz's parabolic profile and half-space vs the circle on a 40 mm slab), so 1 % is the
+# issue's tolerance with that model difference inside it.
+ausroll_add_check(NAME indentation_elastic_hertz
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/indentation_elastic_quiet.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_hertz.py
+  ARGS out --force-column die_punch_force_y --force-factor -2 --coordinate x --radius 10
+       --youngs-modulus 210000 --poissons-ratio 0.3 --tol 0.01)
+# Elastic-plastic indentation to d = 0.25 mm: the punch force rises strictly with the depth, and
+# from d = 0.15 mm (a >= 1.4 mm, fully plastic: E a / (sigma_y R) >= 40) the mean pressure F / a
+# is within 12 % of the flat-punch limit (2 + pi) k = 2077.95 MPa (Prandtl, an independent
+# slip-line result). Why 12 %: a is the extent of the closed nodes, which moves in jumps of the
+# node spacing (0.16 mm, up to 10 % of a), and a cylinder is not exactly flat; observed 0.91-0.98
+# (also on the full run to d = 1 mm: doc/scenes/indentation.md).
+ausroll_add_check(NAME indentation_force_depth
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/indentation_half.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_indentation.py
+  ARGS out/history.csv --yield-stress 700 --from-depth 0.15 --tol 0.12)
+# np = 2 gives the np = 1 history of the elastic-plastic frictional indentation to 1e-8.
+ausroll_add_parallel_check(NAME indentation_np2
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/indentation_short.prm HISTORY out/history.csv)

@@ -164,8 +164,11 @@ namespace ausroll::contact
     /** Return to the committed statuses (step cut back). */
     void reset();
 
-    /** Per die: force on the workpiece, pose, numbers of sticking/slipping nodes, contact length.
-     */
+    /** Per die (columns die_<Name>_...): force on the workpiece (force_x, force_y), pose (x, y,
+        angle), numbers of sticking/slipping nodes, contact_length (extent of the closed nodes'
+        die coordinate s, along the die surface) and contact_width (extent of the closed nodes'
+        current positions along the die-frame x axis: for a die pressed along y this is the
+        contact width, the half-width a in a half model with the symmetry axis at x = 0). */
     std::vector<std::pair<std::string, double>> history_columns() const;
 
     /** Write `contact` CSV (one row per candidate node that is closed or within 1 element of a
