@@ -3,6 +3,7 @@
 
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
@@ -116,13 +117,21 @@ namespace ausroll::solver
         TrilinosWrappers::PreconditionAMG amg;
         amg.initialize(A, list);
 
-        SolverControl                              control(parameters.max_iterations,
+        SolverControl control(parameters.max_iterations,
                               parameters.relative_tolerance * b.l2_norm());
-        SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-            control,
-            SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(parameters.restart));
         x = 0.;
-        gmres.solve(A, x, b, amg);
+        if (parameters.krylov_method == KrylovMethod::cg)
+        {
+          SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+          cg.solve(A, x, b, amg);
+        }
+        else
+        {
+          SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+              control,
+              SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(parameters.restart));
+          gmres.solve(A, x, b, amg);
+        }
         info.iterations = control.last_step();
       }
     }
@@ -131,6 +140,7 @@ namespace ausroll::solver
       throw RunFailure(std::string("linear solver failed: ") + e.what());
     }
     info.seconds = timer.wall_time();
+    info.cpu_seconds = timer.cpu_time();
     return info;
   }
 

@@ -42,6 +42,12 @@ namespace ausroll::solver
                       "MUMPS",
                       Patterns::Selection("MUMPS|KLU"),
                       "Amesos package for Type = direct (MUMPS runs in parallel; KLU is serial).");
+    prm.declare_entry("Iterative method",
+                      "GMRES",
+                      Patterns::Selection("GMRES|CG"),
+                      "Krylov method for Type = iterative. CG needs a symmetric positive definite "
+                      "tangent (small strain, associative plasticity, no friction or follower "
+                      "pressure); GMRES works for any tangent.");
     prm.declare_entry(
         "Relative tolerance", "1e-10", Patterns::Double(0.), "Iterative solver tolerance.");
     prm.declare_entry(
@@ -64,6 +70,8 @@ namespace ausroll::solver
     linear.type
         = prm.get("Type") == "direct" ? LinearSolverType::direct : LinearSolverType::iterative;
     linear.direct_package = prm.get("Direct solver package");
+    linear.krylov_method
+        = prm.get("Iterative method") == "CG" ? KrylovMethod::cg : KrylovMethod::gmres;
     linear.relative_tolerance = prm.get_double("Relative tolerance");
     linear.max_iterations = prm.get_integer("Maximum iterations");
     linear.restart = prm.get_integer("GMRES restart");
