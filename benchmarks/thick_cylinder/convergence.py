@@ -66,6 +66,9 @@ def main():
     ap.add_argument("--work", default="/tmp/ausroll_thick_cylinder")
     ap.add_argument("--q1", default="0,1,2,3,4", help="global refinements for Q1")
     ap.add_argument("--q2", default="0,1,2,3", help="global refinements for Q2")
+    ap.add_argument("--step-check", default="2,2",
+                    help="DEGREE,REFINEMENTS of one extra run with 4x the load steps (200), which "
+                         "separates the load-increment error from the mesh error ('' = none)")
     ap.add_argument("--reuse", action="store_true", help="reuse runs in the work directory")
     ap.add_argument("--figures", default=os.path.join(ausroll_run.ROOT, "doc", "figures"))
     args = ap.parse_args()
@@ -74,43 +77,49 @@ def main():
     base = os.path.join(ausroll_run.ROOT, "prm", "thick_cylinder.prm")
 
     results = []
-    for degree, levels in ((1, args.q1), (2, args.q2)):
-        for r in [int(x) for x in levels.split(",") if x]:
-            name = f"q{degree}_r{r}"
-            run = ausroll_run.run_variant(
-                args.ausroll, base, args.work, name,
-                [f"Geometry/Global refinements = {r}", f"Model/Polynomial degree = {degree}"],
-                reuse=args.reuse)
-            if not run.ok:
-                print(f"  {name}: failed (exit {run.returncode})")
-                continue
-            newton = [int(row["newton_iterations"]) for row in run.rows[1:]]
-            res = {"degree": degree, "refinements": r, "dofs": int(run.rows[-1]["dofs"]),
-                   "error": load_path_error(run, ref_load), "cpu_s": run.cpu,
-                   "wall_s": run.wall, "steps": len(newton), "newton_total": sum(newton),
-                   "newton_mean": sum(newton) / len(newton), "newton_max": max(newton),
-                   "cutbacks": sum(int(row["cutbacks"]) for row in run.rows[1:]), "run": run}
-            results.append(res)
-            print(f"  {name}: {res['dofs']} DoFs, error {res['error']:.2e}, "
-                  f"{run.cpu:.1f} s CPU, {run.wall:.1f} s wall, Newton {sum(newton)}",
-                  flush=True)
+    variants = [(d, int(r), 50) for d, levels in ((1, args.q1), (2, args.q2))
+                for r in levels.split(",") if r]
+    if args.step_check:
+        d, r = (int(x) for x in args.step_check.split(","))
+        variants.append((d, r, 200))
+    for degree, r, steps in variants:
+        name = f"q{degree}_r{r}" + ("" if steps == 50 else f"_{steps}steps")
+        run = ausroll_run.run_variant(
+            args.ausroll, base, args.work, name,
+            [f"Geometry/Global refinements = {r}", f"Model/Polynomial degree = {degree}",
+             f"Loading/Number of steps = {steps}", f"Output/Interval = {steps // 5}"],
+            reuse=args.reuse)
+        if not run.ok:
+            print(f"  {name}: failed (exit {run.returncode})")
+            continue
+        newton = [int(row["newton_iterations"]) for row in run.rows[1:]]
+        res = {"degree": degree, "refinements": r, "dofs": int(run.rows[-1]["dofs"]),
+               "error": load_path_error(run, ref_load), "cpu_s": run.cpu,
+               "wall_s": run.wall, "steps": len(newton), "name": name, "newton_total": sum(newton),
+               "newton_mean": sum(newton) / len(newton), "newton_max": max(newton),
+               "cutbacks": sum(int(row["cutbacks"]) for row in run.rows[1:]), "run": run}
+        results.append(res)
+        print(f"  {name}: {res['dofs']} DoFs, error {res['error']:.2e}, "
+              f"{run.cpu:.1f} s CPU, {run.wall:.1f} s wall, Newton {sum(newton)}",
+              flush=True)
 
-    keys = ["degree", "refinements", "dofs", "error", "cpu_s", "wall_s", "steps",
+    keys = ["name", "degree", "refinements", "dofs", "error", "cpu_s", "wall_s", "steps",
             "newton_total", "newton_mean", "newton_max", "cutbacks"]
     ausroll_run.write_csv(os.path.join(args.work, "thick_cylinder_convergence.csv"), keys, results)
     print(ausroll_run.markdown_table(
-        ["element", "refinements", "DoFs", "max rel. error u(b)", "CPU s", "wall s",
+        ["element", "refinements", "load steps", "DoFs", "max rel. error u(b)", "CPU s", "wall s",
          "Newton it. (total / mean / max per step)", "cutbacks"],
-        [[f"Q{r['degree']}", r["refinements"], r["dofs"], f"{r['error']:.2e}",
+        [[f"Q{r['degree']}", r["refinements"], r["steps"], r["dofs"], f"{r['error']:.2e}",
           f"{r['cpu_s']:.1f}", f"{r['wall_s']:.1f}",
           f"{r['newton_total']} / {r['newton_mean']:.2f} / {r['newton_max']}", r["cutbacks"]]
          for r in results]))
 
     # Newton iterations per step for the scene's own mesh (Q2, 1 refinement) and the finest ones
     print("\nNewton iterations per step (p in MPa):")
-    shown = [r for r in results if (r["degree"], r["refinements"]) == (2, 1)]
-    shown += [max((r for r in results if r["degree"] == d), key=lambda r: r["dofs"])
-              for d in (1, 2) if any(r["degree"] == d for r in results)]
+    uniform = [r for r in results if r["steps"] == 50]
+    shown = [r for r in uniform if (r["degree"], r["refinements"]) == (2, 1)]
+    shown += [max((r for r in uniform if r["degree"] == d), key=lambda r: r["dofs"])
+              for d in (1, 2) if any(r["degree"] == d for r in uniform)]
     for res in shown:
         rows = res["run"].rows[1:]
         print(f"  Q{res['degree']} r{res['refinements']}: " + " ".join(
@@ -118,9 +127,8 @@ def main():
 
     # hoop stress at 180 MPa (output 4 = step 40, t = 1)
     hoop = {}
-    for res in results:
-        probe = os.path.join(args.work, f"q{res['degree']}_r{res['refinements']}",
-                             "probe_radial_0004.csv")
+    for res in uniform:
+        probe = os.path.join(args.work, res["name"], "probe_radial_0004.csv")
         if os.path.exists(probe):
             pts = [(float(r["x"]), float(r["stress_yy"])) for r in ausroll_run.read_history(probe)]
             rs, ss = [p[0] for p in ref_profile], [p[1] for p in ref_profile]
@@ -137,7 +145,7 @@ def main():
     os.makedirs(args.figures, exist_ok=True)
     fig, axes = plt.subplots(1, 3, figsize=(15, 4.3))
     for d, style in ((1, "s-"), (2, "o-")):
-        sel = [r for r in results if r["degree"] == d]
+        sel = [r for r in uniform if r["degree"] == d]
         if not sel:
             continue
         axes[0].loglog([r["dofs"] for r in sel], [r["error"] for r in sel], style, label=f"Q{d}")

@@ -97,8 +97,9 @@ namespace ausroll::solver
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         data.elliptic = true;
         data.higher_order_elements = true;
-        data.smoother_sweeps = 2;
-        data.aggregation_threshold = 0.02;
+        data.smoother_sweeps = parameters.amg_smoother_sweeps;
+        data.aggregation_threshold = parameters.amg_aggregation_threshold;
+        data.smoother_type = parameters.amg_smoother_type.c_str();
         Teuchos::ParameterList              list;
         std::unique_ptr<Epetra_MultiVector> unused_modes;
         data.set_parameters(list, unused_modes, A.trilinos_matrix());

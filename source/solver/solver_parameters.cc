@@ -54,6 +54,19 @@ namespace ausroll::solver
         "Maximum iterations", "2000", Patterns::Integer(1), "Iterative solver limit.");
     prm.declare_entry(
         "GMRES restart", "200", Patterns::Integer(1), "Krylov vectors kept by GMRES.");
+    prm.declare_entry("AMG aggregation threshold",
+                      "0.02",
+                      Patterns::Double(0., 1.),
+                      "ML aggregation threshold: matrix entries below this fraction of the "
+                      "diagonal are dropped when the aggregates are built.");
+    prm.declare_entry("AMG smoother sweeps",
+                      "2",
+                      Patterns::Integer(1, 20),
+                      "Pre- and post-smoothing sweeps per multigrid level.");
+    prm.declare_entry("AMG smoother",
+                      "Chebyshev",
+                      Patterns::Selection("Chebyshev|symmetric Gauss-Seidel|ILU"),
+                      "ML smoother on each level.");
     prm.leave_subsection();
     prm.leave_subsection();
   }
@@ -75,6 +88,9 @@ namespace ausroll::solver
     linear.relative_tolerance = prm.get_double("Relative tolerance");
     linear.max_iterations = prm.get_integer("Maximum iterations");
     linear.restart = prm.get_integer("GMRES restart");
+    linear.amg_aggregation_threshold = prm.get_double("AMG aggregation threshold");
+    linear.amg_smoother_sweeps = prm.get_integer("AMG smoother sweeps");
+    linear.amg_smoother_type = prm.get("AMG smoother");
     prm.leave_subsection();
     prm.leave_subsection();
     require(residual_tolerance > 0. || absolute_tolerance > 0.,

@@ -34,6 +34,9 @@ namespace ausroll::solver
     double           relative_tolerance = 1e-10; ///< `Relative tolerance` of the iterative solver
     unsigned int     max_iterations = 2000;      ///< `Maximum iterations` of the iterative solver
     unsigned int     restart = 200;              ///< `GMRES restart`
+    double           amg_aggregation_threshold = 0.02; ///< `AMG aggregation threshold` (ML)
+    unsigned int     amg_smoother_sweeps = 2;          ///< `AMG smoother sweeps` (ML)
+    std::string      amg_smoother_type = "Chebyshev";  ///< `AMG smoother` (ML smoother type)
   };
 
   /** Parameters of subsection `Solver`. */
