@@ -23,7 +23,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # one thread per process: the timings compare algorithms, not thread pools
 SERIAL_ENV = dict(os.environ, DEAL_II_NUM_THREADS="1", OMP_NUM_THREADS="1",
                   OPENBLAS_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
-                  OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
+                  OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1",
+                  OMPI_MCA_mpi_yield_when_idle="1")
 
 LINEAR_LINE = re.compile(r"linear solve: (\d+) iterations, ([0-9.]+) s wall, ([0-9.]+) s CPU")
 

@@ -33,6 +33,44 @@ SOLVERS = {
 }
 
 
+def one_step(refinements, degree):
+    """Overrides of prm/thick_cylinder.prm: uniform mesh, one load step to 180 MPa, no output."""
+    return [f"Geometry/Global refinements = {refinements}", f"Model/Polynomial degree = {degree}",
+            "Loading/End time = 1", "Loading/Number of steps = 1", "Output/Interval = 0",
+            "Postprocess/Line probes = "]
+
+
+# AMG settings tried for GMRES + AMG (Solver/Linear solver/AMG ...): the default first
+AMG_VARIANTS = {
+    "default (Chebyshev, 2 sweeps, threshold 0.02)": [],
+    "threshold 1e-4": ["Solver/Linear solver/AMG aggregation threshold = 1e-4"],
+    "threshold 0": ["Solver/Linear solver/AMG aggregation threshold = 0"],
+    "Chebyshev, 4 sweeps": ["Solver/Linear solver/AMG smoother sweeps = 4"],
+    "symmetric Gauss-Seidel, 2 sweeps": ["Solver/Linear solver/AMG smoother = symmetric Gauss-Seidel"],
+    "ILU": ["Solver/Linear solver/AMG smoother = ILU"],
+}
+
+
+def amg_tuning(args, base, refinements):
+    """GMRES + AMG with each of AMG_VARIANTS on the meshes @p refinements; prints a table."""
+    rows = []
+    for r in refinements:
+        for k, (label, extra) in enumerate(AMG_VARIANTS.items()):
+            run = ausroll_run.run_variant(
+                args.ausroll, base, args.work, f"amg_q{args.degree}_r{r}_{k}",
+                one_step(r, args.degree) + SOLVERS["GMRES+AMG"] + extra,
+                reuse=args.reuse, timeout=args.timeout)
+            if not run.ok or not run.solves:
+                rows.append([label, r, "failed", "", ""])
+                continue
+            n = len(run.solves)
+            rows.append([label, run.rows[-1]["dofs"], f"{sum(x[0] for x in run.solves) / n:.1f}",
+                         f"{sum(x[2] for x in run.solves) / n:.3g}", f"{run.cpu:.3g}"])
+            print(f"  AMG {label}, r{r}: {rows[-1][2:]}", flush=True)
+    print(ausroll_run.markdown_table(
+        ["GMRES + AMG setting", "DoFs", "Krylov it./solve", "CPU s/solve", "run CPU s"], rows))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--ausroll", default=os.path.join(ausroll_run.ROOT, "build", "ausroll"))
@@ -46,6 +84,9 @@ def main():
                     help="seconds per run; slower runs are reported as timed out")
     ap.add_argument("--skip-after-timeout", action="store_true", default=True,
                     help="do not try larger meshes with a solver that timed out")
+    ap.add_argument("--amg-tuning", default="",
+                    help="refinements (e.g. 3,4) on which to try the AMG settings AMG_VARIANTS "
+                         "with GMRES instead of the solver comparison")
     ap.add_argument("--reuse", action="store_true", help="reuse runs in the work directory")
     ap.add_argument("--csv", default=None, help="CSV output (default: WORK/solver_study.csv)")
     ap.add_argument("--figure", default=os.path.join(ausroll_run.ROOT, "doc", "figures",
@@ -53,6 +94,9 @@ def main():
     args = ap.parse_args()
     os.makedirs(args.work, exist_ok=True)
     base = os.path.join(ausroll_run.ROOT, "prm", "thick_cylinder.prm")
+    if args.amg_tuning:
+        amg_tuning(args, base, [int(x) for x in args.amg_tuning.split(",")])
+        return 0
     solvers = args.solvers.split(",")
     records, given_up = [], set()
     for r in [int(x) for x in args.refinements.split(",")]:
@@ -62,9 +106,7 @@ def main():
             name = f"q{args.degree}_r{r}_{s.replace('+', '_')}"
             run = ausroll_run.run_variant(
                 args.ausroll, base, args.work, name,
-                [f"Geometry/Global refinements = {r}", f"Model/Polynomial degree = {args.degree}",
-                 "Loading/End time = 1", "Loading/Number of steps = 1",
-                 "Output/Interval = 0", "Postprocess/Line probes = "] + SOLVERS[s],
+                one_step(r, args.degree) + SOLVERS[s],
                 reuse=args.reuse, timeout=args.timeout)
             rec = {"solver": s, "refinements": r, "ok": run.ok, "returncode": run.returncode,
                    "wall_s": run.wall, "cpu_s": run.cpu, "solves": len(run.solves)}

@@ -174,7 +174,7 @@ def main():
     ax.plot([p[0] for p in ref_profile], [p[1] for p in ref_profile], "k-", lw=2,
             label="1D reference")
     for key in sorted(hoop):
-        if key in ((2, 1), (1, 0)) or key == max(hoop):
+        if key in ((2, 1), (1, 2)) or key == max(hoop):
             pts, err = hoop[key]
             ax.plot([p[0] for p in pts], [p[1] for p in pts], "--",
                     label=f"Q{key[0]}, {key[1]} refinement(s) (max error {err:.1%})")
