@@ -88,6 +88,8 @@ def main():
                     help="refinements (e.g. 3,4) on which to try the AMG settings AMG_VARIANTS "
                          "with GMRES instead of the solver comparison")
     ap.add_argument("--reuse", action="store_true", help="reuse runs in the work directory")
+    ap.add_argument("--reuse-only", action="store_true",
+                    help="only collect the runs already in the work directory (no new runs)")
     ap.add_argument("--csv", default=None, help="CSV output (default: WORK/solver_study.csv)")
     ap.add_argument("--figure", default=os.path.join(ausroll_run.ROOT, "doc", "figures",
                                                     "solver_study.png"))
@@ -104,10 +106,12 @@ def main():
             if s in given_up:
                 continue
             name = f"q{args.degree}_r{r}_{s.replace('+', '_')}"
+            if args.reuse_only and not os.path.exists(os.path.join(args.work, name, "times.txt")):
+                continue
             run = ausroll_run.run_variant(
                 args.ausroll, base, args.work, name,
                 one_step(r, args.degree) + SOLVERS[s],
-                reuse=args.reuse, timeout=args.timeout)
+                reuse=args.reuse or args.reuse_only, timeout=args.timeout)
             rec = {"solver": s, "refinements": r, "ok": run.ok, "returncode": run.returncode,
                    "wall_s": run.wall, "cpu_s": run.cpu, "solves": len(run.solves)}
             if run.ok:
