@@ -37,7 +37,8 @@ namespace ausroll::solver
         "Type",
         "direct",
         Patterns::Selection("direct|iterative"),
-        "direct: sparse LU (Trilinos Amesos); iterative: GMRES + algebraic multigrid.");
+        "direct: sparse LU (Trilinos Amesos; the fastest for 2D up to 10^6 DoFs, see "
+        "doc/benchmarks.md); iterative: Krylov method (Iterative method) + algebraic multigrid.");
     prm.declare_entry("Direct solver package",
                       "MUMPS",
                       Patterns::Selection("MUMPS|KLU"),
