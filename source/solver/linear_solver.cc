@@ -3,6 +3,7 @@
 
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
@@ -96,8 +97,9 @@ namespace ausroll::solver
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         data.elliptic = true;
         data.higher_order_elements = true;
-        data.smoother_sweeps = 2;
-        data.aggregation_threshold = 0.02;
+        data.smoother_sweeps = parameters.amg_smoother_sweeps;
+        data.aggregation_threshold = parameters.amg_aggregation_threshold;
+        data.smoother_type = parameters.amg_smoother_type.c_str();
         Teuchos::ParameterList              list;
         std::unique_ptr<Epetra_MultiVector> unused_modes;
         data.set_parameters(list, unused_modes, A.trilinos_matrix());
@@ -116,13 +118,21 @@ namespace ausroll::solver
         TrilinosWrappers::PreconditionAMG amg;
         amg.initialize(A, list);
 
-        SolverControl                              control(parameters.max_iterations,
+        SolverControl control(parameters.max_iterations,
                               parameters.relative_tolerance * b.l2_norm());
-        SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-            control,
-            SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(parameters.restart));
         x = 0.;
-        gmres.solve(A, x, b, amg);
+        if (parameters.krylov_method == KrylovMethod::cg)
+        {
+          SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+          cg.solve(A, x, b, amg);
+        }
+        else
+        {
+          SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+              control,
+              SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(parameters.restart));
+          gmres.solve(A, x, b, amg);
+        }
         info.iterations = control.last_step();
       }
     }
@@ -131,6 +141,7 @@ namespace ausroll::solver
       throw RunFailure(std::string("linear solver failed: ") + e.what());
     }
     info.seconds = timer.wall_time();
+    info.cpu_seconds = timer.cpu_time();
     return info;
   }
 

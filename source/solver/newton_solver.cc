@@ -77,6 +77,9 @@ namespace ausroll::solver
 
       const LinearSolveInfo info = problem.solve_for_increment();
       result.linear_iterations += info.iterations;
+      log << "    linear solve: " << info.iterations << " iterations, " << std::fixed
+          << std::setprecision(3) << info.seconds << " s wall, " << info.cpu_seconds << " s CPU"
+          << std::defaultfloat << std::endl;
       ++result.iterations;
       // directional derivative of the energy along the increment at the start of the step
       const double slope = problem.increment_residual_product();

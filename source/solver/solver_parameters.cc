@@ -37,17 +37,37 @@ namespace ausroll::solver
         "Type",
         "direct",
         Patterns::Selection("direct|iterative"),
-        "direct: sparse LU (Trilinos Amesos); iterative: GMRES + algebraic multigrid.");
+        "direct: sparse LU (Trilinos Amesos; the fastest for 2D up to 10^6 DoFs, see "
+        "doc/benchmarks.md); iterative: Krylov method (Iterative method) + algebraic multigrid.");
     prm.declare_entry("Direct solver package",
                       "MUMPS",
                       Patterns::Selection("MUMPS|KLU"),
                       "Amesos package for Type = direct (MUMPS runs in parallel; KLU is serial).");
+    prm.declare_entry("Iterative method",
+                      "GMRES",
+                      Patterns::Selection("GMRES|CG"),
+                      "Krylov method for Type = iterative. CG needs a symmetric positive definite "
+                      "tangent (small strain, associative plasticity, no friction or follower "
+                      "pressure); GMRES works for any tangent.");
     prm.declare_entry(
         "Relative tolerance", "1e-10", Patterns::Double(0.), "Iterative solver tolerance.");
     prm.declare_entry(
         "Maximum iterations", "2000", Patterns::Integer(1), "Iterative solver limit.");
     prm.declare_entry(
         "GMRES restart", "200", Patterns::Integer(1), "Krylov vectors kept by GMRES.");
+    prm.declare_entry("AMG aggregation threshold",
+                      "0.02",
+                      Patterns::Double(0., 1.),
+                      "ML aggregation threshold: matrix entries below this fraction of the "
+                      "diagonal are dropped when the aggregates are built.");
+    prm.declare_entry("AMG smoother sweeps",
+                      "2",
+                      Patterns::Integer(1, 20),
+                      "Pre- and post-smoothing sweeps per multigrid level.");
+    prm.declare_entry("AMG smoother",
+                      "Chebyshev",
+                      Patterns::Selection("Chebyshev|symmetric Gauss-Seidel|ILU"),
+                      "ML smoother on each level.");
     prm.leave_subsection();
     prm.leave_subsection();
   }
@@ -64,9 +84,14 @@ namespace ausroll::solver
     linear.type
         = prm.get("Type") == "direct" ? LinearSolverType::direct : LinearSolverType::iterative;
     linear.direct_package = prm.get("Direct solver package");
+    linear.krylov_method
+        = prm.get("Iterative method") == "CG" ? KrylovMethod::cg : KrylovMethod::gmres;
     linear.relative_tolerance = prm.get_double("Relative tolerance");
     linear.max_iterations = prm.get_integer("Maximum iterations");
     linear.restart = prm.get_integer("GMRES restart");
+    linear.amg_aggregation_threshold = prm.get_double("AMG aggregation threshold");
+    linear.amg_smoother_sweeps = prm.get_integer("AMG smoother sweeps");
+    linear.amg_smoother_type = prm.get("AMG smoother");
     prm.leave_subsection();
     prm.leave_subsection();
     require(residual_tolerance > 0. || absolute_tolerance > 0.,

@@ -19,12 +19,13 @@ namespace ausroll::solver
   /** What one linear solve did. */
   struct LinearSolveInfo
   {
-    unsigned int iterations = 0; ///< Krylov iterations (0 for the direct solver)
-    double       seconds = 0.;   ///< wall time of set-up + solve
+    unsigned int iterations = 0;   ///< Krylov iterations (0 for the direct solver)
+    double       seconds = 0.;     ///< wall time of set-up + solve
+    double       cpu_seconds = 0.; ///< CPU time of set-up + solve on this process
   };
 
   /**
-   * Direct (Amesos MUMPS/KLU) or iterative (GMRES + ML algebraic multigrid) solver. The AMG
+   * Direct (Amesos MUMPS/KLU) or iterative (GMRES or CG + ML algebraic multigrid) solver. The AMG
    * preconditioner is given the rigid-body modes of the displacement field (translations and
    * rotations) as near null space, which deal.II 9.4 does not provide by itself.
    */
