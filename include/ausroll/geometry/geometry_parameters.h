@@ -18,7 +18,8 @@ namespace ausroll::geometry
     quarter_ring, ///< quarter of an annulus (thick cylinder); subsection `Quarter ring`
     rectangle,    ///< axis-parallel rectangle (slab, block, cantilever, upsetting); `Rectangle`
     quarter_disk, ///< lower-right quarter of a disk (cylinder on a flat: Hertz); `Quarter disk`
-    mesh_file     ///< a mesh read from `Mesh file` (Gmsh .msh or UCD .inp)
+    mesh_file,    ///< a mesh read from `Mesh file` (Gmsh .msh or UCD .inp)
+    ring          ///< full annulus (disk with a bore: disk rolling); subsection `Ring`
   };
 
   /**
@@ -44,6 +45,13 @@ namespace ausroll::geometry
     // subsection `Quarter disk`
     dealii::Point<2> disk_center{0., 1.}; ///< `Center`
     double           disk_radius = 1.;    ///< `Radius`
+
+    // subsection `Ring` (full annulus; boundary ids 0 inner circle, 1 outer circle)
+    dealii::Point<2> ring_center{0., 0.};     ///< `Center`
+    double           ring_inner_radius = 1.;  ///< `Inner radius`
+    double           ring_outer_radius = 2.;  ///< `Outer radius`
+    unsigned int     ring_cells_around = 24;  ///< `Cells around` the circumference (coarse mesh)
+    unsigned int     ring_cells_radially = 4; ///< `Cells radially` across the wall (coarse mesh)
 
     // local refinement towards a point (any shape)
     dealii::Point<2> refinement_point{0., 0.}; ///< `Refinement point`
