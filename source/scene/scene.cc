@@ -295,6 +295,7 @@ namespace ausroll::scene
     probes = std::make_unique<io::LineProbes<dim>>(parameters.postprocess.line_probes,
                                                    parameters.model.quadrature_points);
     probes->locate(mapping, dof_handler);
+    profile = std::make_unique<io::BoundaryProfile<dim>>(parameters.postprocess.boundary_profile);
   }
 
   template <int dim>
@@ -643,6 +644,8 @@ namespace ausroll::scene
                   dof_handler,
                   solution_ghosted,
                   material_points);
+    profile->write(
+        parameters.output.directory, output_counter, time, mapping, dof_handler, solution_ghosted);
     std::vector<io::NodalField>   nodal_fields;
     TrilinosWrappers::MPI::Vector pressure_traction, status_gap;
     if (contact.active())
@@ -799,7 +802,8 @@ namespace ausroll::scene
         for (unsigned int k = 0; k <= loading.number_of_steps; ++k)
           times.push_back(k * nominal_dt);
         const auto box = GridTools::compute_bounding_box(triangulation);
-        contact.check_dies(times, box.get_boundary_points().first.distance(box.get_boundary_points().second));
+        contact.check_dies(
+            times, box.get_boundary_points().first.distance(box.get_boundary_points().second));
       }
       // Initial (undeformed) state.
       history = std::make_unique<io::History>(comm, parameters.output.directory + "/history.csv");

@@ -219,3 +219,11 @@ ausroll_add_script_check(NAME cantilever_large_deflection
 # outside fold-over events (0.5 %), force and bulge at 30 % vs the Q2 16x12 reference (2 %, 1 %),
 # small strain underestimates the load (> 20 %). About 25 s.
 ausroll_add_script_check(NAME upsetting SCRIPT ${AUSROLL_CHECKS_DIR}/check_upsetting.py)
+
+# ---------------------------------------------------------------- disk rolling (ring, profile)
+# Boundary profile on a full ring (Geometry/Type = ring) under internal pressure with the outer
+# circle held: every bore node moves radially by Lame's u(a) within 0.2 % (Q2 24 x 4 mesh: 2e-4),
+# reference points on the exact circles (1e-9 mm), on 1 rank, with hanging nodes, and np = 2
+# writing the same file as np = 1 (1e-9 mm). About 5 s.
+ausroll_add_script_check(NAME ring_boundary_profile
+  SCRIPT ${AUSROLL_CHECKS_DIR}/check_boundary_profile.py)

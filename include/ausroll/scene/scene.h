@@ -7,6 +7,7 @@
 
 #include <ausroll/adaptivity/material_point_transfer.h>
 #include <ausroll/contact/contact_operator.h>
+#include <ausroll/io/boundary_profile.h>
 #include <ausroll/io/history.h>
 #include <ausroll/io/line_probe.h>
 #include <ausroll/io/solution_writer.h>
@@ -175,11 +176,12 @@ namespace ausroll::scene
     /** Reaction boundaries: id and, per component, the locally owned DoFs on it. */
     std::vector<std::pair<unsigned int, std::array<dealii::IndexSet, dim>>> reaction_boundaries;
 
-    std::unique_ptr<io::LineProbes<dim>>     probes;
-    std::unique_ptr<io::History>             history;
-    std::unique_ptr<io::SolutionWriter<dim>> writer;
-    double                                   start_wall_time = 0.;
-    dealii::Timer                            wall_clock;
+    std::unique_ptr<io::LineProbes<dim>>      probes;
+    std::unique_ptr<io::BoundaryProfile<dim>> profile; ///< `Postprocess/Boundary profile`
+    std::unique_ptr<io::History>              history;
+    std::unique_ptr<io::SolutionWriter<dim>>  writer;
+    double                                    start_wall_time = 0.;
+    dealii::Timer                             wall_clock;
   };
 
   /** Read @p parameter_file and run the scene on @p comm (dispatch on the dimension). */
