@@ -474,6 +474,33 @@ namespace ausroll::contact
   }
 
   template <int dim>
+  void ContactOperator<dim>::append_rolling_columns(
+      const RollingMotion                         &rolling,
+      const std::string                           &prefix,
+      std::vector<std::pair<std::string, double>> &columns) const
+  {
+    // The force on the workpiece is already in columns (force_x, force_y); resolve it in the
+    // frame of the line of centres.
+    Tensor<1, 2> force;
+    for (const auto &[name, value] : columns)
+      for (unsigned int d = 0; d < 2; ++d)
+        if (name == prefix + "force_" + std::string(1, "xy"[d]))
+          force[d] = value;
+    const auto        &d = rolling.data();
+    const Tensor<1, 2> e_r(
+        {std::cos(rolling.line_angle(time)), std::sin(rolling.line_angle(time))});
+    const Tensor<1, 2> e_t({-e_r[1], e_r[0]});
+    const double       a0 = d.initial_center_distance.value_or(d.workpiece_radius + d.die_radius);
+    columns.emplace_back(prefix + "revolution",
+                         d.direction * (rolling.line_angle(time) - d.initial_line_angle) * 180.
+                             / M_PI);
+    columns.emplace_back(prefix + "feed", a0 - rolling.center_distance(time));
+    columns.emplace_back(prefix + "force_radial", force * e_r);
+    columns.emplace_back(prefix + "force_tangential", force * e_t);
+    columns.emplace_back(prefix + "force_magnitude", force.norm());
+  }
+
+  template <int dim>
   std::vector<std::pair<std::string, double>> ContactOperator<dim>::history_columns() const
   {
     std::vector<std::pair<std::string, double>> columns;
@@ -502,6 +529,8 @@ namespace ausroll::contact
       s_min = Utilities::MPI::min(s_min, comm);
       s_max = Utilities::MPI::max(s_max, comm);
       columns.emplace_back(p + "contact_length", s_max >= s_min ? s_max - s_min : 0.);
+      if (const RollingMotion *rolling = dies[k]->rolling_motion())
+        append_rolling_columns(*rolling, p, columns);
     }
     return columns;
   }
@@ -693,7 +722,7 @@ namespace ausroll::contact
               = dies[k]->die_surface().project(dies[k]->pose(times.front()).to_local(to_2d(n.X)));
           if (p0.gap < deepest)
           {
-            deepest      = p0.gap;
+            deepest = p0.gap;
             deepest_node = to_2d(n.X);
           }
           for (const double t : times)
@@ -704,7 +733,8 @@ namespace ausroll::contact
           }
         }
       if (Utilities::MPI::sum(n_candidates, comm) == 0)
-        throw InputError(path + "/Candidate boundaries: no workpiece boundary node carries these ids");
+        throw InputError(path
+                         + "/Candidate boundaries: no workpiece boundary node carries these ids");
       const double global_deepest = Utilities::MPI::min(deepest, comm);
       if (global_deepest < -0.05 * workpiece_size)
       {
