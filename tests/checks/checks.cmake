@@ -227,3 +227,8 @@ ausroll_add_script_check(NAME upsetting SCRIPT ${AUSROLL_CHECKS_DIR}/check_upset
 # writing the same file as np = 1 (1e-9 mm). About 5 s.
 ausroll_add_script_check(NAME ring_boundary_profile
   SCRIPT ${AUSROLL_CHECKS_DIR}/check_boundary_profile.py)
+
+# Short disk rolling (coarse ring, feed 0.762 mm + 20 degrees, load-increment ratio): force sign,
+# Coulomb bound |F_t| <= 1.05 mu |F_r|, symmetric indentation (F_x = 0 to 1e-6 |F|) and |F| within
+# the slab/Prandtl estimate [1990, 10250] N/mm (derivation in check_disk_rolling.py). About 5 s CPU.
+ausroll_add_script_check(NAME disk_rolling_short SCRIPT ${AUSROLL_CHECKS_DIR}/check_disk_rolling.py)
