@@ -7,7 +7,8 @@ Runs variants of the scene and writes
   * doc/figures/disk_rolling_profile.png  rim radial displacement vs angle during rolling and
                                           after unloading (residual "cam"), polar sketch
   * doc/figures/disk_rolling_kinematics.png small vs finite strain (coarse mesh)
-  * CSVs of all curves in <work>/csv/ (force_<mesh>.csv, residual_<mesh>.csv)
+  * CSVs of all curves in <work>/csv/ (force_<mesh>.csv, residual_<mesh>.csv); the shipped
+    results are copied to benchmarks/disk_rolling/results/
 and prints the tables of doc/scenes/disk_rolling.md (markdown).
 
 Usage (repository root, after building):
@@ -145,6 +146,8 @@ def write_csvs(args, name, rows, prof):
                 "die_roll_revolution", "die_roll_feed", "die_roll_force_magnitude",
                 "die_roll_force_radial", "die_roll_force_tangential", "die_roll_force_x",
                 "die_roll_force_y")) + "\n")
+    if float(rows[-1]["die_roll_feed"]) >= 0.0:  # no unloading (the fine mesh): no residual
+        return
     t, ang, ur = prof[-1]
     with open(os.path.join(d, f"residual_{name}.csv"), "w") as f:
         f.write("angle_deg,radial_displacement_mm\n")
@@ -192,7 +195,7 @@ def main():
     runs["coarse_finite"] = run(args, "coarse_finite", mesh_entries("coarse") + timeline(n)
                                 + ["Model/Kinematics = finite strain"])
     prof = {m: profiles(args, m) for m in runs}
-    for m in ("coarse", "medium", "coarse_finite"):
+    for m in runs:
         write_csvs(args, m, runs[m][0], prof[m])
 
     lo, hi = 10.0, args.fine_angle
@@ -269,7 +272,7 @@ def main():
         found = nearest_profile(prof["medium"], runs["medium"][0], angle)
         if found:
             (t, ang, ur), rev = found
-            ax.plot(ang, [1000 * u for u in ur], lw=0.8, label=f"rolling, die at {rev:.0f} deg")
+            ax.plot(ang, [1000 * u for u in ur], lw=0.8, label=f"rolling, die revolved {rev:.0f} deg (at {(90 + rev) % 360:.0f} deg)")
     for m, style in (("medium", "k-"), ("coarse", "k:")):
         t, ang, ur = prof[m][-1]
         ax.plot(ang, [1000 * u for u in ur], style, lw=1.6,
