@@ -722,7 +722,7 @@ namespace ausroll::contact
               = dies[k]->die_surface().project(dies[k]->pose(times.front()).to_local(to_2d(n.X)));
           if (p0.gap < deepest)
           {
-            deepest = p0.gap;
+            deepest      = p0.gap;
             deepest_node = to_2d(n.X);
           }
           for (const double t : times)
@@ -733,8 +733,7 @@ namespace ausroll::contact
           }
         }
       if (Utilities::MPI::sum(n_candidates, comm) == 0)
-        throw InputError(path
-                         + "/Candidate boundaries: no workpiece boundary node carries these ids");
+        throw InputError(path + "/Candidate boundaries: no workpiece boundary node carries these ids");
       const double global_deepest = Utilities::MPI::min(deepest, comm);
       if (global_deepest < -0.05 * workpiece_size)
       {

@@ -802,8 +802,7 @@ namespace ausroll::scene
         for (unsigned int k = 0; k <= loading.number_of_steps; ++k)
           times.push_back(k * nominal_dt);
         const auto box = GridTools::compute_bounding_box(triangulation);
-        contact.check_dies(
-            times, box.get_boundary_points().first.distance(box.get_boundary_points().second));
+        contact.check_dies(times, box.get_boundary_points().first.distance(box.get_boundary_points().second));
       }
       // Initial (undeformed) state.
       history = std::make_unique<io::History>(comm, parameters.output.directory + "/history.csv");

@@ -176,12 +176,14 @@ namespace ausroll::scene
     /** Reaction boundaries: id and, per component, the locally owned DoFs on it. */
     std::vector<std::pair<unsigned int, std::array<dealii::IndexSet, dim>>> reaction_boundaries;
 
-    std::unique_ptr<io::LineProbes<dim>>      probes;
-    std::unique_ptr<io::BoundaryProfile<dim>> profile; ///< `Postprocess/Boundary profile`
-    std::unique_ptr<io::History>              history;
-    std::unique_ptr<io::SolutionWriter<dim>>  writer;
-    double                                    start_wall_time = 0.;
-    dealii::Timer                             wall_clock;
+    std::unique_ptr<io::LineProbes<dim>>     probes;
+    std::unique_ptr<io::History>             history;
+    std::unique_ptr<io::SolutionWriter<dim>> writer;
+    double                                   start_wall_time = 0.;
+    dealii::Timer                            wall_clock;
+
+    /** Rim profiles (`Postprocess/Boundary profile`). */
+    std::unique_ptr<io::BoundaryProfile<dim>> profile;
   };
 
   /** Read @p parameter_file and run the scene on @p comm (dispatch on the dimension). */
