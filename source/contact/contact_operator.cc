@@ -464,6 +464,33 @@ namespace ausroll::contact
   }
 
   template <int dim>
+  void ContactOperator<dim>::append_rolling_columns(
+      const RollingMotion                         &rolling,
+      const std::string                           &prefix,
+      std::vector<std::pair<std::string, double>> &columns) const
+  {
+    // The force on the workpiece is already in columns (force_x, force_y); resolve it in the
+    // frame of the line of centres.
+    Tensor<1, 2> force;
+    for (const auto &[name, value] : columns)
+      for (unsigned int d = 0; d < 2; ++d)
+        if (name == prefix + "force_" + std::string(1, "xy"[d]))
+          force[d] = value;
+    const auto        &d = rolling.data();
+    const Tensor<1, 2> e_r(
+        {std::cos(rolling.line_angle(time)), std::sin(rolling.line_angle(time))});
+    const Tensor<1, 2> e_t({-e_r[1], e_r[0]});
+    const double       a0 = d.initial_center_distance.value_or(d.workpiece_radius + d.die_radius);
+    columns.emplace_back(prefix + "revolution",
+                         d.direction * (rolling.line_angle(time) - d.initial_line_angle) * 180.
+                             / M_PI);
+    columns.emplace_back(prefix + "feed", a0 - rolling.center_distance(time));
+    columns.emplace_back(prefix + "force_radial", force * e_r);
+    columns.emplace_back(prefix + "force_tangential", force * e_t);
+    columns.emplace_back(prefix + "force_magnitude", force.norm());
+  }
+
+  template <int dim>
   std::vector<std::pair<std::string, double>> ContactOperator<dim>::history_columns() const
   {
     std::vector<std::pair<std::string, double>> columns;
@@ -499,6 +526,8 @@ namespace ausroll::contact
       x_min = Utilities::MPI::min(x_min, comm);
       x_max = Utilities::MPI::max(x_max, comm);
       columns.emplace_back(p + "contact_width", x_max >= x_min ? x_max - x_min : 0.);
+      if (const RollingMotion *rolling = dies[k]->rolling_motion())
+        append_rolling_columns(*rolling, p, columns);
     }
     return columns;
   }

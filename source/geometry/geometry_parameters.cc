@@ -12,12 +12,13 @@ namespace ausroll::geometry
     prm.declare_entry(
         "Type",
         "quarter ring",
-        Patterns::Selection("quarter ring|rectangle|quarter disk|mesh file|gear tooth"),
+        Patterns::Selection("quarter ring|rectangle|quarter disk|mesh file|gear tooth|ring"),
         "Workpiece shape. Boundary ids: quarter ring: 0 inner arc, 1 outer arc, "
         "2 edge on the x axis, 3 edge on the y axis; rectangle: 0 left, 1 right, "
         "2 bottom, 3 top; quarter disk (the quarter below and right of the centre): "
         "0 arc, 1 top edge, 2 edge on the vertical axis; mesh file: the ids stored "
-        "in the file; gear tooth: 0 tooth outline, 1 inner arc, 2 side cuts.");
+        "in the file; gear tooth: 0 tooth outline, 1 inner arc, 2 side cuts; ring (full "
+        "annulus): 0 inner circle, 1 outer circle.");
     prm.declare_entry("Global refinements",
                       "0",
                       Patterns::Integer(0, 12),
@@ -63,6 +64,17 @@ namespace ausroll::geometry
     prm.leave_subsection();
 
     GearToothParameters::declare_parameters(prm);
+    prm.enter_subsection("Ring");
+    prm.declare_entry("Center", "0, 0", Patterns::Anything(), "Centre of the annulus (mm).");
+    prm.declare_entry("Inner radius", "1", Patterns::Double(), "Bore radius (mm), > 0.");
+    prm.declare_entry(
+        "Outer radius", "2", Patterns::Double(), "Outer radius (mm), > Inner radius.");
+    prm.declare_entry("Cells around",
+                      "24",
+                      Patterns::Integer(3),
+                      "Coarse cells along the circumference (24: 15 degree spacing).");
+    prm.declare_entry("Cells radially", "4", Patterns::Integer(1), "Coarse cells across the wall.");
+    prm.leave_subsection();
 
     prm.enter_subsection("Rectangle");
     prm.declare_entry(
@@ -84,6 +96,7 @@ namespace ausroll::geometry
            : t == "rectangle"    ? WorkpieceType::rectangle
            : t == "quarter disk" ? WorkpieceType::quarter_disk
            : t == "gear tooth"   ? WorkpieceType::gear_tooth
+           : t == "ring"         ? WorkpieceType::ring
                                  : WorkpieceType::mesh_file;
     refinement_point = parse_point<2>(prm.get("Refinement point"), "Geometry/Refinement point");
     refinement_radius = prm.get_double("Refinement radius");
@@ -106,6 +119,13 @@ namespace ausroll::geometry
     prm.leave_subsection();
 
     gear_tooth.parse_parameters(prm);
+    prm.enter_subsection("Ring");
+    ring_center = parse_point<2>(prm.get("Center"), "Geometry/Ring/Center");
+    ring_inner_radius = prm.get_double("Inner radius");
+    ring_outer_radius = prm.get_double("Outer radius");
+    ring_cells_around = prm.get_integer("Cells around");
+    ring_cells_radially = prm.get_integer("Cells radially");
+    prm.leave_subsection();
 
     prm.enter_subsection("Rectangle");
     lower_left
@@ -120,6 +140,13 @@ namespace ausroll::geometry
       require(inner_radius > 0. && inner_radius < outer_radius,
               "Geometry/Quarter ring/Inner radius",
               "must be positive and smaller than Outer radius");
+    if (type == WorkpieceType::ring)
+    {
+      require(ring_inner_radius > 0., "Geometry/Ring/Inner radius", "must be positive");
+      require(ring_outer_radius > ring_inner_radius,
+              "Geometry/Ring/Outer radius",
+              "must be larger than Inner radius");
+    }
     if (type == WorkpieceType::rectangle)
       require(lower_left[0] < upper_right[0] && lower_left[1] < upper_right[1],
               "Geometry/Rectangle/Upper right corner",

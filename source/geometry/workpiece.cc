@@ -7,6 +7,7 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria_description.h>
 
 #include <cmath>
 #include <fstream>
@@ -46,6 +47,42 @@ namespace ausroll::geometry
             else
               face->set_boundary_id(1);
           }
+    }
+
+    /**
+     * Full annulus a <= r <= b about the centre c: a polar grid of `Cells radially` x
+     * `Cells around` cells whose last angular column closes onto the first (shared vertices, no
+     * seam). Boundary ids: 0 inner circle, 1 outer circle.
+     */
+    void ring(const GeometryParameters &p, Triangulation<2> &coarse)
+    {
+      const unsigned int    n_r = p.ring_cells_radially, n_t = p.ring_cells_around;
+      std::vector<Point<2>> vertices;
+      for (unsigned int i = 0; i <= n_r; ++i)
+        for (unsigned int j = 0; j < n_t; ++j)
+        {
+          const double r
+              = p.ring_inner_radius + (p.ring_outer_radius - p.ring_inner_radius) * i / double(n_r);
+          const double phi = 2. * numbers::PI * j / double(n_t);
+          vertices.emplace_back(p.ring_center
+                                + Tensor<1, 2>({r * std::cos(phi), r * std::sin(phi)}));
+        }
+      // Local x = radial, local y = counter-clockwise: positive Jacobian.
+      std::vector<CellData<2>> cells;
+      for (unsigned int i = 0; i < n_r; ++i)
+        for (unsigned int j = 0; j < n_t; ++j)
+        {
+          CellData<2>        cell;
+          const unsigned int jn = (j + 1) % n_t;
+          cell.vertices = {i * n_t + j, (i + 1) * n_t + j, i * n_t + jn, (i + 1) * n_t + jn};
+          cells.push_back(cell);
+        }
+      coarse.create_triangulation(vertices, cells, SubCellData());
+      const double mid = 0.5 * (p.ring_inner_radius + p.ring_outer_radius);
+      for (const auto &cell : coarse.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            face->set_boundary_id(face->center().distance(p.ring_center) < mid ? 0 : 1);
     }
 
     void rectangle(const GeometryParameters &p, Triangulation<2> &coarse)
@@ -167,6 +204,8 @@ namespace ausroll::geometry
         quarter_disk(parameters, coarse);
       else if (parameters.type == WorkpieceType::gear_tooth)
         create_gear_tooth_mesh(parameters.gear_tooth, coarse);
+      else if (parameters.type == WorkpieceType::ring)
+        ring(parameters, coarse);
       else
         rectangle(parameters, coarse);
     }
@@ -185,6 +224,12 @@ namespace ausroll::geometry
         attach_disk_manifolds(parameters, triangulation);
       if (parameters.type == WorkpieceType::gear_tooth)
         attach_gear_tooth_manifolds(parameters.gear_tooth, triangulation);
+      if (parameters.type == WorkpieceType::ring)
+      {
+        // Polar manifold (periodic in the angle) on every cell: refined points lie on circles.
+        triangulation.set_all_manifold_ids(1);
+        triangulation.set_manifold(1, PolarManifold<2>(parameters.ring_center));
+      }
     }
     if (!refine)
       return;

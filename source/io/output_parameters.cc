@@ -1,4 +1,5 @@
 #include <ausroll/core/exceptions.h>
+#include <ausroll/core/parse_utilities.h>
 #include <ausroll/io/output_parameters.h>
 
 namespace ausroll::io
@@ -68,6 +69,7 @@ namespace ausroll::io
         "Straight lines 'name: x0, y0, x1, y1, n; ...' (reference coordinates, n points) "
         "along which displacement, stress and plastic strain are written to "
         "probe_<name>_NNNN.csv at every VTU output.");
+    BoundaryProfileParameters::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -77,6 +79,32 @@ namespace ausroll::io
     monitor_points = prm.get("Monitor points");
     reaction_boundaries = prm.get("Reaction boundaries");
     line_probes = prm.get("Line probes");
+    boundary_profile.parse_parameters(prm);
+    prm.leave_subsection();
+  }
+
+  void BoundaryProfileParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary profile");
+    prm.declare_entry("Boundary ids",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundaries whose nodes are written, sorted by polar angle about the Center, "
+                      "to profile_NNNN.csv at every VTU output (reference and current position, "
+                      "angle, current radius, radial displacement). Empty: no profile.");
+    prm.declare_entry("Center",
+                      "0, 0",
+                      Patterns::Anything(),
+                      "Origin of the polar angle and radius (mm), e.g. the disk centre.");
+    prm.leave_subsection();
+  }
+
+  void BoundaryProfileParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary profile");
+    boundary_ids
+        = parse_unsigned_list(prm.get("Boundary ids"), "Postprocess/Boundary profile/Boundary ids");
+    center = parse_point<2>(prm.get("Center"), "Postprocess/Boundary profile/Center");
     prm.leave_subsection();
   }
 } // namespace ausroll::io

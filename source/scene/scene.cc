@@ -305,6 +305,7 @@ namespace ausroll::scene
     probes = std::make_unique<io::LineProbes<dim>>(parameters.postprocess.line_probes,
                                                    parameters.model.quadrature_points);
     probes->locate(mapping, dof_handler);
+    profile = std::make_unique<io::BoundaryProfile<dim>>(parameters.postprocess.boundary_profile);
   }
 
   template <int dim>
@@ -653,6 +654,8 @@ namespace ausroll::scene
                   dof_handler,
                   solution_ghosted,
                   material_points);
+    profile->write(
+        parameters.output.directory, output_counter, time, mapping, dof_handler, solution_ghosted);
     std::vector<io::NodalField>   nodal_fields;
     TrilinosWrappers::MPI::Vector pressure_traction, status_gap;
     if (contact.active())

@@ -329,3 +329,16 @@ ausroll_add_check(NAME indentation_force_depth
 # np = 2 gives the np = 1 history of the elastic-plastic frictional indentation to 1e-8.
 ausroll_add_parallel_check(NAME indentation_np2
   PRM ${CMAKE_CURRENT_BINARY_DIR}/indentation_short.prm HISTORY out/history.csv)
+
+# ---------------------------------------------------------------- disk rolling (ring, profile)
+# Boundary profile on a full ring (Geometry/Type = ring) under internal pressure with the outer
+# circle held: every bore node moves radially by Lame's u(a) within 0.2 % (Q2 24 x 4 mesh: 2e-4),
+# reference points on the exact circles (1e-9 mm), on 1 rank, with hanging nodes, and np = 2
+# writing the same file as np = 1 (1e-9 mm). About 5 s.
+ausroll_add_script_check(NAME ring_boundary_profile
+  SCRIPT ${AUSROLL_CHECKS_DIR}/check_boundary_profile.py)
+
+# Short disk rolling (coarse ring, feed 0.762 mm + 20 degrees, load-increment ratio): force sign,
+# Coulomb bound |F_t| <= 1.05 mu |F_r|, symmetric indentation (F_x = 0 to 1e-6 |F|) and |F| within
+# the slab/Prandtl estimate [1990, 10250] N/mm (derivation in check_disk_rolling.py). About 5 s CPU.
+ausroll_add_script_check(NAME disk_rolling_short SCRIPT ${AUSROLL_CHECKS_DIR}/check_disk_rolling.py)

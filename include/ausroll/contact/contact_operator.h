@@ -171,6 +171,17 @@ namespace ausroll::contact
         contact width, the half-width a in a half model with the symmetry axis at x = 0). */
     std::vector<std::pair<std::string, double>> history_columns() const;
 
+    /**
+     * Columns of a die with `Motion/Type = rolling` (appended after its force block by
+     * history_columns()): `revolution` theta_G (degrees), `feed` f (mm), the force on the workpiece
+     * resolved along the line of centres, `force_radial` (along e_r from the workpiece centre to
+     * the die centre: negative when the die presses), `force_tangential` (along e_t = k x e_r,
+     * counter-clockwise), and `force_magnitude` |F|.
+     */
+    void append_rolling_columns(const RollingMotion                         &rolling,
+                                const std::string                           &prefix,
+                                std::vector<std::pair<std::string, double>> &columns) const;
+
     /** Write `contact` CSV (one row per candidate node that is closed or within 1 element of a
      * die). */
     void write_csv(const std::string &filename, const MPI_Comm comm) const;

@@ -46,6 +46,12 @@ namespace ausroll::contact
     /** Pose at time @p t. */
     DiePose pose(const double t) const { return motion->pose(t); }
 
+    /** The planetary rolling motion of this die, or nullptr if it moves otherwise. */
+    const RollingMotion *rolling_motion() const
+    {
+      return dynamic_cast<const RollingMotion *>(motion.get());
+    }
+
     /** The die surface in die coordinates. */
     const DieSurface &die_surface() const { return *surface; }
 

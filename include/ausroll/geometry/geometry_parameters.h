@@ -21,7 +21,8 @@ namespace ausroll::geometry
     rectangle,    ///< axis-parallel rectangle (slab, block, cantilever, upsetting); `Rectangle`
     quarter_disk, ///< lower-right quarter of a disk (cylinder on a flat: Hertz); `Quarter disk`
     mesh_file,    ///< a mesh read from `Mesh file` (Gmsh .msh or UCD .inp)
-    gear_tooth    ///< involute gear tooth sector with rim; subsection `Gear tooth`
+    gear_tooth,   ///< involute gear tooth sector with rim; subsection `Gear tooth`
+    ring          ///< full annulus (disk with a bore: disk rolling); subsection `Ring`
   };
 
   /**
@@ -50,6 +51,12 @@ namespace ausroll::geometry
 
     // subsection `Gear tooth`
     GearToothParameters gear_tooth; ///< involute tooth sector (Type = gear tooth)
+    // subsection `Ring` (full annulus; boundary ids 0 inner circle, 1 outer circle)
+    dealii::Point<2> ring_center{0., 0.};     ///< `Center`
+    double           ring_inner_radius = 1.;  ///< `Inner radius`
+    double           ring_outer_radius = 2.;  ///< `Outer radius`
+    unsigned int     ring_cells_around = 24;  ///< `Cells around` the circumference (coarse mesh)
+    unsigned int     ring_cells_radially = 4; ///< `Cells radially` across the wall (coarse mesh)
 
     // local refinement towards a point (any shape)
     dealii::Point<2> refinement_point{0., 0.}; ///< `Refinement point`

@@ -5,8 +5,10 @@
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
 
 #include <string>
+#include <vector>
 
 namespace ausroll::io
 {
@@ -34,12 +36,29 @@ namespace ausroll::io
     void parse_parameters(dealii::ParameterHandler &prm);
   };
 
+  /**
+   * Parameters of subsection `Postprocess/Boundary profile`: the deformed shape of boundaries
+   * (e.g. the rim of a rolled disk) in polar coordinates about a centre, written with every VTU
+   * output as `profile_NNNN.csv` (see io::BoundaryProfile).
+   */
+  struct BoundaryProfileParameters
+  {
+    std::vector<unsigned int> boundary_ids; ///< `Boundary ids` (empty: no profile)
+    dealii::Point<2>          center;       ///< `Center` of the polar angle and radius
+
+    /** Declare subsection `Boundary profile` (inside `Postprocess`). */
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    /** Read subsection `Boundary profile` (inside `Postprocess`). */
+    void parse_parameters(dealii::ParameterHandler &prm);
+  };
+
   /** Parameters of subsection `Postprocess`: quantities written to history.csv. */
   struct PostprocessParameters
   {
     std::string monitor_points;      ///< `Monitor points` "name: x, y; ..." -> name_ux, name_uy
     std::string reaction_boundaries; ///< `Reaction boundaries` ids -> reaction_<id>_x, _y
     std::string line_probes;         ///< `Line probes` "name: x0, y0, x1, y1, n; ..."
+    BoundaryProfileParameters boundary_profile; ///< subsection `Boundary profile`
 
     /** Declare subsection `Postprocess`. */
     static void declare_parameters(dealii::ParameterHandler &prm);

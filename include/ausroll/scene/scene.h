@@ -7,6 +7,7 @@
 
 #include <ausroll/adaptivity/material_point_transfer.h>
 #include <ausroll/contact/contact_operator.h>
+#include <ausroll/io/boundary_profile.h>
 #include <ausroll/io/history.h>
 #include <ausroll/io/line_probe.h>
 #include <ausroll/io/solution_writer.h>
@@ -181,6 +182,9 @@ namespace ausroll::scene
     std::unique_ptr<io::SolutionWriter<dim>> writer;
     double                                   start_wall_time = 0.;
     dealii::Timer                            wall_clock;
+
+    /** Rim profiles (`Postprocess/Boundary profile`). */
+    std::unique_ptr<io::BoundaryProfile<dim>> profile;
   };
 
   /** Read @p parameter_file and run the scene on @p comm (dispatch on the dimension). */
