@@ -5,7 +5,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 
-prm="${1:-$AUSROLL_ROOT/prm/thick_cylinder.prm}"
+prm="${1:-$AUSROLL_ROOT/prm/gear_rolling.prm}"
 if [ ! -f "$prm" ]; then
   echo "scripts/run.sh: no such parameter file: $prm" >&2
   exit 2

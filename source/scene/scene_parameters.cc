@@ -1,7 +1,9 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/scene/scene_parameters.h>
 
+#include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <vector>
 
@@ -108,11 +110,41 @@ namespace ausroll::scene
     }
   } // namespace
 
+  namespace
+  {
+    /**
+     * The text of @p filename with every relative `include` path that names a file next to
+     * @p filename replaced by that path, so that `include base.prm` works from any working
+     * directory (ParameterHandler resolves includes relative to the working directory). Paths
+     * not found there are left alone. Lines keep their numbers.
+     */
+    std::string resolve_includes(std::istream &in, const std::string &filename)
+    {
+      const std::filesystem::path directory = std::filesystem::path(filename).parent_path();
+      const std::regex            include_line(R"(^(\s*include\s+)(\S(.*\S)?)\s*$)");
+      std::ostringstream          out;
+      std::string                 line;
+      std::smatch                 match;
+      while (std::getline(in, line))
+      {
+        if (std::regex_match(line, match, include_line))
+        {
+          const std::filesystem::path path(match[2].str());
+          if (path.is_relative() && std::filesystem::exists(directory / path))
+            line = match[1].str() + (directory / path).string();
+        }
+        out << line << '\n';
+      }
+      return out.str();
+    }
+  } // namespace
+
   SceneParameters read_parameter_file(const std::string &filename)
   {
-    std::ifstream in(filename);
-    if (!in)
+    std::ifstream file(filename);
+    if (!file)
       throw InputError("cannot open parameter file '" + filename + "'");
+    std::istringstream in(resolve_includes(file, filename));
 
     ParameterHandler prm;
     SceneParameters::declare_parameters(prm);

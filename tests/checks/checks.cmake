@@ -64,6 +64,12 @@ ausroll_add_check(NAME contact_block_press
   ARGS out/history.csv --value die_punch_force_y 1 -4615.384615 1e-9
        --value die_punch_force_x 1 0 1e-9 --value die_punch_slip_nodes 1 17 0)
 
+# The same scene through a relative `include` run from another directory: same exact die force.
+ausroll_add_check(NAME include_relative_path
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/block_press_include.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_history.py
+  ARGS out/history.csv --value die_punch_force_y 1 -4615.384615 1e-9)
+
 # Coulomb friction: stick/slip zones while pressing, F_x/F_y = -mu in full slip (exact), nothing
 # left after lift-off. Same assertions for both contact strategies.
 set(_slide_asserts
