@@ -348,3 +348,12 @@ ausroll_add_script_check(NAME ring_boundary_profile
 # Coulomb bound |F_t| <= 1.05 mu |F_r|, symmetric indentation (F_x = 0 to 1e-6 |F|) and |F| within
 # the slab/Prandtl estimate [1990, 10250] N/mm (derivation in check_disk_rolling.py). About 5 s CPU.
 ausroll_add_script_check(NAME disk_rolling_short SCRIPT ${AUSROLL_CHECKS_DIR}/check_disk_rolling.py)
+
+# Disk rolling (short: feed + 20 degrees, load increment ratio with Coulomb friction) on 1 and 2
+# ranks: every history column within 1e-8 of its largest value.
+ausroll_add_parallel_check(NAME disk_rolling_short_np2
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_short.prm HISTORY out/history.csv)
+
+# Gear rolling (short trailing pass, frictionless active set) on 1 and 2 ranks: 1e-8.
+ausroll_add_parallel_check(NAME gear_rolling_short_np2
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/gear_rolling_short.prm HISTORY out/history.csv)
