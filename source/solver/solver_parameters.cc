@@ -40,9 +40,10 @@ namespace ausroll::solver
         "direct: sparse LU (Trilinos Amesos; the fastest for 2D up to 10^6 DoFs, see "
         "doc/benchmarks.md); iterative: Krylov method (Iterative method) + algebraic multigrid.");
     prm.declare_entry("Direct solver package",
-                      "MUMPS",
-                      Patterns::Selection("MUMPS|KLU"),
-                      "Amesos package for Type = direct (MUMPS runs in parallel; KLU is serial).");
+                      "automatic",
+                      Patterns::Selection("automatic|MUMPS|KLU"),
+                      "Amesos package for Type = direct: automatic (KLU on one MPI rank below "
+                      "10^4 unknowns, MUMPS otherwise), MUMPS (runs in parallel), KLU (serial).");
     prm.declare_entry("Iterative method",
                       "GMRES",
                       Patterns::Selection("GMRES|CG"),

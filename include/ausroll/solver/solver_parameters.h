@@ -28,15 +28,15 @@ namespace ausroll::solver
   /** Parameters of subsection `Solver/Linear solver`. */
   struct LinearSolverParameters
   {
-    LinearSolverType type = LinearSolverType::direct;     ///< `Type`
-    std::string      direct_package = "MUMPS";            ///< `Direct solver package` (MUMPS | KLU)
-    KrylovMethod     krylov_method = KrylovMethod::gmres; ///< `Iterative method` (GMRES | CG)
-    double           relative_tolerance = 1e-10; ///< `Relative tolerance` of the iterative solver
-    unsigned int     max_iterations = 2000;      ///< `Maximum iterations` of the iterative solver
-    unsigned int     restart = 200;              ///< `GMRES restart`
-    double           amg_aggregation_threshold = 0.02; ///< `AMG aggregation threshold` (ML)
-    unsigned int     amg_smoother_sweeps = 2;          ///< `AMG smoother sweeps` (ML)
-    std::string      amg_smoother_type = "Chebyshev";  ///< `AMG smoother` (ML smoother type)
+    LinearSolverType type = LinearSolverType::direct; ///< `Type`
+    std::string direct_package = "automatic"; ///< `Direct solver package` (automatic | MUMPS | KLU)
+    KrylovMethod krylov_method = KrylovMethod::gmres; ///< `Iterative method` (GMRES | CG)
+    double       relative_tolerance = 1e-10;       ///< `Relative tolerance` of the iterative solver
+    unsigned int max_iterations = 2000;            ///< `Maximum iterations` of the iterative solver
+    unsigned int restart = 200;                    ///< `GMRES restart`
+    double       amg_aggregation_threshold = 0.02; ///< `AMG aggregation threshold` (ML)
+    unsigned int amg_smoother_sweeps = 2;          ///< `AMG smoother sweeps` (ML)
+    std::string  amg_smoother_type = "Chebyshev";  ///< `AMG smoother` (ML smoother type)
   };
 
   /** Parameters of subsection `Solver`. */
