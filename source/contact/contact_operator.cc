@@ -1,5 +1,6 @@
 #include <ausroll/contact/contact_operator.h>
 #include <ausroll/core/exceptions.h>
+#include <ausroll/core/gather_rows.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -566,13 +567,9 @@ namespace ausroll::contact
              n.Rn,
              contact_force(n) * n.projection.tangent,
              double(static_cast<int>(n.status))});
-    const auto gathered = Utilities::MPI::gather(comm, rows, 0);
+    const std::vector<std::vector<double>> all = gather_sorted_rows(comm, rows);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
-    std::vector<std::vector<double>> all;
-    for (const auto &part : gathered)
-      all.insert(all.end(), part.begin(), part.end());
-    std::sort(all.begin(), all.end());
     std::ofstream out(filename);
     out << "# time = " << time
         << "; status: 0 open, 1 stick, 2 slip; p_n, t_t in MPa, R_n, R_t in N\n"

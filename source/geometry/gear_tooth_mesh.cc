@@ -80,7 +80,7 @@ namespace ausroll::geometry
       const double half_space = M_PI / g.n_teeth();
 
       // Tooth: 4 rows between tip, pitch and fillet start, 2 columns (axis, middle, flank).
-      const std::array<double, 5> levels = {rt, 0.5 * (rt + rp), rp, 0.5 * (rp + rs), rs};
+      const std::array<double, 5> levels = {{rt, 0.5 * (rt + rp), rp, 0.5 * (rp + rs), rs}};
       for (unsigned int j = 0; j + 1 < levels.size(); ++j)
       {
         const double   hi = levels[j], lo = levels[j + 1];
@@ -89,8 +89,8 @@ namespace ausroll::geometry
         const Point<2> m_lo = polar(lo, 0.5 * g.half_thickness_angle(lo));
         const Point<2> f_hi = g.flank_point(hi, FlankSide::positive);
         const Point<2> f_lo = g.flank_point(lo, FlankSide::positive);
-        quads.push_back({a_lo, a_hi, m_hi, m_lo});
-        quads.push_back({m_lo, m_hi, f_hi, f_lo});
+        quads.push_back({{a_lo, a_hi, m_hi, m_lo}});
+        quads.push_back({{m_lo, m_hi, f_hi, f_lo}});
       }
 
       // Rim: columns below the tooth (axis, middle, fillet start), under the fillet and under
@@ -146,7 +146,7 @@ namespace ausroll::geometry
         for (unsigned int i = 0; i <= n_columns; ++i)
           lower[i] = level_point(r, i);
         for (unsigned int i = 0; i < n_columns; ++i)
-          quads.push_back({lower[i], lower[i + 1], upper[i + 1], upper[i]});
+          quads.push_back({{lower[i], lower[i + 1], upper[i + 1], upper[i]}});
         upper = lower;
       }
       return quads;

@@ -1,3 +1,4 @@
+#include <ausroll/core/gather_rows.h>
 #include <ausroll/io/boundary_profile.h>
 
 #include <deal.II/base/mpi.h>
@@ -65,14 +66,10 @@ namespace ausroll::io
               }
           }
 
-    const MPI_Comm comm = dof_handler.get_communicator();
-    const auto     gathered = Utilities::MPI::gather(comm, rows, 0);
+    const MPI_Comm                   comm = dof_handler.get_communicator();
+    std::vector<std::vector<double>> all = gather_sorted_rows(comm, rows);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
-    std::vector<std::vector<double>> all;
-    for (const auto &part : gathered)
-      all.insert(all.end(), part.begin(), part.end());
-    std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(),
                           all.end(),
                           [](const auto &a, const auto &b) { return a[0] == b[0]; }),

@@ -1,4 +1,5 @@
 #include <ausroll/core/exceptions.h>
+#include <ausroll/core/gather_rows.h>
 #include <ausroll/core/parse_utilities.h>
 #include <ausroll/io/line_probe.h>
 
@@ -144,13 +145,9 @@ namespace ausroll::io
         row.insert(row.end(), fields, fields + 6);
         rows.push_back(row);
       }
-      const auto gathered = Utilities::MPI::gather(comm, rows, 0);
+      const std::vector<std::vector<double>> all = gather_sorted_rows(comm, rows);
       if (Utilities::MPI::this_mpi_process(comm) != 0)
         continue;
-      std::vector<std::vector<double>> all;
-      for (const auto &part : gathered)
-        all.insert(all.end(), part.begin(), part.end());
-      std::sort(all.begin(), all.end());
 
       std::ostringstream name;
       name << directory << "/probe_" << probe.name << "_" << std::setw(4) << std::setfill('0')
