@@ -25,15 +25,14 @@ import argparse
 import csv
 import math
 import os
-import resource
-import subprocess
 import sys
-import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 BASE = os.path.join(ROOT, "prm", "disk_rolling.prm")
 sys.path.insert(0, os.path.join(ROOT, "benchmarks", "studies"))
 from study import pyplot  # noqa: E402  (matplotlib if installed, else None)
+sys.path.insert(0, os.path.join(ROOT, "benchmarks"))
+from ausroll_run import run_variant  # noqa: E402
 
 # name: (cells around, cells radially, label)
 MESHES = {
@@ -64,37 +63,17 @@ def mesh_entries(mesh):
 
 
 def run(args, name, overrides):
-    """Run a variant in <work>/<name>; returns (history rows, user CPU s, wall s)."""
-    out = os.path.join(args.work, name)
-    history = os.path.join(out, "history.csv")
-    timing = os.path.join(out, "timing.txt")
-    if args.reuse and os.path.exists(timing):
-        cpu, wall = (float(x) for x in open(timing).read().split())
-        return list(csv.DictReader(open(history))), cpu, wall
+    """Run a variant in <work>/<name> (benchmarks/ausroll_run.py); returns (history rows, CPU s,
+    wall s)."""
     os.makedirs(args.work, exist_ok=True)
-    prm = os.path.join(args.work, name + ".prm")
-    subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "prm_variant.py"), BASE, prm,
-                    f"Output/Directory = {out}", "Output/Write VTU = false",
-                    "Output/Verbosity = quiet"] + overrides, check=True)
-    env = dict(os.environ, DEAL_II_NUM_THREADS="1", OMP_NUM_THREADS="1")
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    start = time.time()
-    result = subprocess.run([args.ausroll, prm], capture_output=True, text=True, env=env)
-    wall = time.time() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = after.ru_utime - before.ru_utime
-    os.makedirs(out, exist_ok=True)
-    with open(os.path.join(out, "run.log"), "w") as log:
-        log.write(result.stdout + result.stderr)
+    result = run_variant(args.ausroll, BASE, args.work, name, overrides, reuse=args.reuse)
     if result.returncode != 0:
-        print(f"  {name}: ausroll exit {result.returncode}: {result.stderr.strip()[-300:]}")
-    with open(timing, "w") as f:
-        f.write(f"{cpu} {wall}\n")
-    rows = list(csv.DictReader(open(history))) if os.path.exists(history) else []
-    print(f"  {name}: {len(rows) - 1} steps, {cpu:.1f} s CPU ({wall:.1f} s wall), "
+        print(f"  {name}: ausroll exit {result.returncode}: {result.log.strip()[-300:]}")
+    rows = result.rows
+    print(f"  {name}: {len(rows) - 1} steps, {result.cpu:.1f} s CPU ({result.wall:.1f} s wall), "
           f"{sum(int(r['newton_iterations']) for r in rows)} Newton iterations, "
           f"{sum(int(r['cutbacks']) for r in rows)} cutbacks", flush=True)
-    return rows, cpu, wall
+    return rows, result.cpu, result.wall
 
 
 def profiles(args, name):
