@@ -140,6 +140,24 @@ namespace ausroll::contact
   }
 
   template <int dim>
+  unsigned int ContactOperator<dim>::close_penetrating_nodes(const TrilinosWrappers::MPI::Vector &u)
+  {
+    update_geometry(u, true);
+    unsigned int closed = 0;
+    for (const Node &n : nodes)
+      if (n.owned && n.fresh && n.status != ContactStatus::open)
+        ++closed;
+    return Utilities::MPI::sum(closed, comm);
+  }
+
+  template <int dim>
+  void ContactOperator<dim>::start_iterate()
+  {
+    for (Node &n : nodes)
+      n.fresh = false;
+  }
+
+  template <int dim>
   unsigned int ContactOperator<dim>::update_geometry(const TrilinosWrappers::MPI::Vector &u,
                                                      const bool allow_closing)
   {
@@ -163,7 +181,7 @@ namespace ausroll::contact
             n.die = k;
           }
         }
-        if (allow_closing && n.projection.valid
+        if (allow_closing && !n.fresh && n.projection.valid
             && n.projection.gap < (n.changes == 0 ? gap_tolerance : -gap_tolerance)
             && n.changes < parameters.max_status_changes)
           switch_status(n,
@@ -183,6 +201,9 @@ namespace ausroll::contact
     if (status == n.status)
       return;
     ++n.changes;
+    // Nested active set: a node that changed at this state is judged again only after the
+    // equations have been solved with its new constraint.
+    n.fresh = parameters.strategy == ContactStrategy::nested_active_set;
     if (status == ContactStatus::stick)
       // A node that stops slipping sticks where its slip started (no relative motion over the
       // step); a node that closes sticks where it meets the die.
@@ -306,7 +327,7 @@ namespace ausroll::contact
     unsigned int changes = 0;
     for (Node &n : nodes)
     {
-      if (n.status == ContactStatus::open || n.changes >= parameters.max_status_changes)
+      if (n.status == ContactStatus::open || n.fresh || n.changes >= parameters.max_status_changes)
         continue;
       const RigidDie &die = *dies[n.die];
       ContactStatus   target = n.status;

@@ -18,10 +18,13 @@ namespace ausroll::contact
     prm.declare_entry(
         "Strategy",
         "active set",
-        Patterns::Selection("active set|load increment ratio"),
+        Patterns::Selection("active set|nested active set|load increment ratio"),
         "active set: contact statuses are updated inside the Newton loop (semi-smooth "
-        "Newton); load increment ratio: statuses are fixed during a sub-step and each "
-        "step is scaled to the next status change (NOFEAP, Okamoto).");
+        "Newton); nested active set: Newton converges with fixed statuses, then the statuses "
+        "are updated at the converged state and Newton continues until none changes (robust "
+        "when many nodes change status per step, as in rolling with friction); load increment "
+        "ratio: statuses are fixed during a sub-step and each step is scaled to the next status "
+        "change (NOFEAP, Okamoto).");
     prm.declare_entry(
         "Maximum status changes",
         "6",
@@ -196,8 +199,12 @@ namespace ausroll::contact
   {
     prm.enter_subsection("Contact");
     const unsigned int n_dies = prm.get_integer("Number of dies");
-    strategy = prm.get("Strategy") == "active set" ? ContactStrategy::active_set
-                                                   : ContactStrategy::load_increment_ratio;
+    {
+      const std::string name = prm.get("Strategy");
+      strategy = name == "active set"          ? ContactStrategy::active_set
+                 : name == "nested active set" ? ContactStrategy::nested_active_set
+                                               : ContactStrategy::load_increment_ratio;
+    }
     max_status_changes = prm.get_integer("Maximum status changes");
     ratio_tolerance = prm.get_double("Ratio tolerance");
     dies.clear();

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <regex>
 #include <sstream>
 
 namespace ausroll::scene
@@ -419,6 +420,7 @@ namespace ausroll::scene
     const bool         active_set
         = contact.active() && contact.strategy() == contact::ContactStrategy::active_set;
     contact.set_time(time);
+    contact.start_iterate();
 
     // With the active-set strategy, statuses that change at this iterate (judged by the reactions
     // of this very assembly) require the constraints to be rebuilt and the system re-assembled.
@@ -478,6 +480,42 @@ namespace ausroll::scene
     last_residual_norm = free_residual.l2_norm();
     last_reference_force = std::max(external_force.l2_norm(), reaction_norm);
     return true;
+  }
+
+  template <int dim>
+  unsigned int Scene<dim>::update_constraints_at_convergence(ConditionalOStream &log)
+  {
+    if (!contact.active() || contact.strategy() != contact::ContactStrategy::nested_active_set)
+      return 0;
+    // The reactions of the converged state (residual_ghosted of the last assembly) decide;
+    // penetrating open nodes close.
+    contact.set_time(time);
+    contact.start_iterate();
+    const unsigned int closed = contact.close_penetrating_nodes(solution_ghosted);
+    const unsigned int changed = contact.update_statuses();
+    if (closed + changed > 0)
+      log << "      contact: " << closed << " closed, " << changed << " other status change"
+          << (changed == 1 ? "" : "s") << " at the converged state" << std::endl;
+    return closed + changed;
+  }
+
+  template <int dim>
+  void Scene<dim>::remove_numbered_outputs() const
+  {
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    const std::regex numbered(
+        R"((solution_[0-9]+(\.[0-9]+)?\.(vtu|pvtu)|(contact|profile)_[0-9]{4}\.csv|probe_.+_[0-9]{4}\.csv))");
+    std::error_code ec;
+    for (const auto &entry : std::filesystem::directory_iterator(parameters.output.directory, ec))
+      if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), numbered))
+        std::filesystem::remove(entry.path(), ec);
+  }
+
+  template <int dim>
+  bool Scene<dim>::backtrack_with_small_constraint_gaps() const
+  {
+    return contact.active() && contact.strategy() == contact::ContactStrategy::nested_active_set;
   }
 
   template <int dim>
@@ -815,6 +853,9 @@ namespace ausroll::scene
         contact.check_dies(
             times, box.get_boundary_points().first.distance(box.get_boundary_points().second));
       }
+      // A new run in a directory used before: numbered files of the earlier run would mix with
+      // this run's (history.csv and solution.pvd are rewritten anyway).
+      remove_numbered_outputs();
       // Initial (undeformed) state.
       history = std::make_unique<io::History>(comm, parameters.output.directory + "/history.csv");
       solution = 0.;

@@ -26,14 +26,18 @@ namespace ausroll::solver
     }
     double first_norm = problem.residual_norm();
     double previous_norm = std::numeric_limits<double>::infinity();
+    // Outer passes of a problem that updates its constraints at convergence: each pass gets the
+    // full Newton budget; more passes than this means the constraints cycle.
+    constexpr unsigned int max_outer_passes = 30;
+    unsigned int           pass_start = 0;
 
     for (unsigned int it = 0;; ++it)
     {
-      const double norm = problem.residual_norm();
+      double       norm = problem.residual_norm();
       const double reference = problem.reference_force();
       const double tolerance
           = std::max(parameters.absolute_tolerance, parameters.residual_tolerance * reference);
-      const bool constraints_ok = problem.constraint_violation() <= constraint_tolerance;
+      bool constraints_ok = problem.constraint_violation() <= constraint_tolerance;
       result.residual = norm;
 
       log << "    Newton " << std::setw(2) << it << ": |r| = " << std::scientific
@@ -47,21 +51,53 @@ namespace ausroll::solver
         result.reason = "residual is not a finite number";
         return result;
       }
-      if (norm <= tolerance && constraints_ok && (it > 0 || norm == 0. || reference > 0.))
-      {
-        result.converged = true;
-        return result;
-      }
+      bool converged
+          = norm <= tolerance && constraints_ok && (it > 0 || norm == 0. || reference > 0.);
       // Round-off floor: the residual no longer decreases although it is already tiny compared
       // with the force level (ill-conditioned systems, e.g. a body held by one contact node).
-      if (it >= 2 && constraints_ok && norm <= 1e-6 * reference && norm > 0.5 * previous_norm)
+      if (!converged && it >= pass_start + 2 && constraints_ok && norm <= 1e-6 * reference
+          && norm > 0.5 * previous_norm)
       {
         log << "    (residual at round-off level, accepted)" << std::endl;
-        result.converged = true;
-        return result;
+        converged = true;
       }
-      previous_norm = norm;
-      if (it >= parameters.max_newton_iterations)
+      if (converged)
+      {
+        const unsigned int changes = problem.update_constraints_at_convergence(log);
+        if (changes == 0)
+        {
+          result.converged = true;
+          return result;
+        }
+        if (++result.outer_passes > max_outer_passes)
+        {
+          std::ostringstream msg;
+          msg << "the contact statuses still change after " << max_outer_passes
+              << " converged passes";
+          result.reason = msg.str();
+          return result;
+        }
+        if (!problem.assemble(true, message))
+        {
+          result.reason = message;
+          return result;
+        }
+        pass_start = it;
+        norm = problem.residual_norm();
+        constraints_ok = problem.constraint_violation() <= constraint_tolerance;
+        first_norm = norm;
+        previous_norm = std::numeric_limits<double>::infinity();
+        log << "    Newton " << std::setw(2) << it << ": |r| = " << std::scientific
+            << std::setprecision(3) << norm << "  (" << changes << " contact status change"
+            << (changes > 1 ? "s" : "") << ")";
+        if (!constraints_ok)
+          log << "  constraint gap " << problem.constraint_violation();
+        log << std::defaultfloat << std::endl;
+        // fall through: iterate with the new constraints
+      }
+      else
+        previous_norm = norm;
+      if (it >= pass_start + parameters.max_newton_iterations)
       {
         std::ostringstream msg;
         msg << "no convergence in " << parameters.max_newton_iterations
@@ -69,12 +105,19 @@ namespace ausroll::solver
         result.reason = msg.str();
         return result;
       }
-      if (it > 1 && norm > parameters.divergence_factor * std::max(first_norm, tolerance))
+      if (it > pass_start + 1
+          && norm > parameters.divergence_factor * std::max(first_norm, tolerance))
       {
         result.reason = "Newton iteration diverges";
         return result;
       }
 
+      // Backtracking also when the constraints are nearly met at this iterate: the linearised
+      // contact constraint on a curved die leaves a gap of second order (d^2 / 2R) after each
+      // iteration.
+      const bool nearly_met = problem.backtrack_with_small_constraint_gaps()
+                              && problem.constraint_violation() <= std::max(
+                                     constraint_tolerance, 1e-3 * problem.length_scale());
       const LinearSolveInfo info = problem.solve_for_increment();
       result.linear_iterations += info.iterations;
       log << "    linear solve: " << info.iterations << " iterations, " << std::fixed
@@ -89,7 +132,7 @@ namespace ausroll::solver
       double step = 1.;
       problem.apply_increment(step);
       bool admissible = problem.assemble(true, message);
-      if (parameters.line_search && constraints_ok)
+      if (parameters.line_search && (constraints_ok || (nearly_met && it > pass_start)))
         for (unsigned int ls = 0; ls < 6; ++ls)
         {
           if (admissible && problem.residual_norm() <= (1. - 1e-4 * step) * norm)
@@ -120,7 +163,7 @@ namespace ausroll::solver
         result.reason = message;
         return result;
       }
-      if (it == 0)
+      if (it == pass_start)
         first_norm = std::max(first_norm, problem.residual_norm());
     }
   }

@@ -106,6 +106,15 @@ namespace ausroll::contact
     /** Distance from @p x to the nearest die (|gap|) at time @p t (infinite if none in range). */
     double distance_to_dies(const dealii::Point<dim> &x, const double t) const;
 
+    /**
+     * A new displacement iterate begins (after a Newton update): statuses changed at the previous
+     * iterate may be judged again by their reactions. Within one iterate a node changes its status
+     * at most once: the reaction of a node that was just closed, opened or switched between stick
+     * and slip belongs to the old constraint and says nothing about the new one until the
+     * equations have been solved with it.
+     */
+    void start_iterate();
+
     /** Time of the current iterate (die poses). */
     void set_time(const double t) { time = t; }
 
@@ -115,6 +124,12 @@ namespace ausroll::contact
      */
     unsigned int update_geometry(const dealii::TrilinosWrappers::MPI::Vector &u,
                                  const bool                                   allow_closing);
+
+    /**
+     * Nested active set: project all nodes at @p u and close the open nodes that penetrate a die.
+     * Returns the number of nodes closed (global).
+     */
+    unsigned int close_penetrating_nodes(const dealii::TrilinosWrappers::MPI::Vector &u);
 
     /**
      * Add the constraints of the closed nodes to @p constraints (which may already hold Dirichlet
@@ -227,6 +242,7 @@ namespace ausroll::contact
       dealii::Tensor<1, dim> R;          ///< nodal contact force (residual)
       double                 Rn = 0., Rt = 0.;
       unsigned int           changes = 0; ///< status changes in the current step
+      bool fresh = false; ///< status changed at the current iterate (reaction not yet meaningful)
 
       /** Make the current status, die, stick point and slip sign the committed ones. */
       void commit_status()

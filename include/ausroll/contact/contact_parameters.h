@@ -16,6 +16,8 @@ namespace ausroll::contact
   enum class ContactStrategy
   {
     active_set,          ///< statuses updated inside the Newton loop (semi-smooth Newton)
+    nested_active_set,   ///< Newton converges with fixed statuses, then they are updated and
+                         ///< Newton continues (outer loop; robust for rolling with friction)
     load_increment_ratio ///< statuses fixed per sub-step; steps scaled to the next status change
                          ///< (NOFEAP)
   };

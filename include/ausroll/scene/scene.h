@@ -56,8 +56,15 @@ namespace ausroll::scene
 
     /** @name solver::NonlinearProblem */
     //@{
-    bool                    assemble(const bool with_matrix, std::string &message) override;
-    double                  residual_norm() const override;
+    bool   assemble(const bool with_matrix, std::string &message) override;
+    double residual_norm() const override;
+    /** Nested active set (`Contact/Strategy`): update the contact statuses at a converged state. */
+    unsigned int update_constraints_at_convergence(dealii::ConditionalOStream &log) override;
+    /** Delete numbered output files (VTU/PVTU, contact/profile/probe CSV) that an earlier run left
+        in `Output/Directory` (rank 0; not when resuming). */
+    void remove_numbered_outputs() const;
+    /** True with the nested active set (curved dies leave second-order gaps after each iterate). */
+    bool                    backtrack_with_small_constraint_gaps() const override;
     double                  reference_force() const override;
     double                  constraint_violation() const override;
     solver::LinearSolveInfo solve_for_increment() override;

@@ -55,6 +55,26 @@ namespace ausroll::solver
      * potential energy along d (negative at the start of a descent step, zero at its minimum).
      */
     virtual double increment_residual_product() const = 0;
+
+    /**
+     * Called when the iteration has converged with the current constraints. A problem whose
+     * constraints depend on the converged state (contact statuses of the nested active set)
+     * updates them and returns the number of changes; the solver then re-assembles and continues
+     * (a new outer pass). The default changes nothing.
+     */
+    virtual unsigned int update_constraints_at_convergence(dealii::ConditionalOStream &log)
+    {
+      (void)log;
+      return 0;
+    }
+
+    /**
+     * Whether the line search may backtrack while the constraints are only nearly met (violation
+     * below 1e-3 of the length scale: the second-order gap d^2 / 2R a linearised contact
+     * constraint on a curved die leaves after each iteration). Default: backtrack only once the
+     * constraints are met.
+     */
+    virtual bool backtrack_with_small_constraint_gaps() const { return false; }
   };
 
   /** Outcome of one Newton solve. */
@@ -62,6 +82,7 @@ namespace ausroll::solver
   {
     bool         converged = false;     ///< equilibrium reached
     unsigned int iterations = 0;        ///< Newton iterations (linear solves)
+    unsigned int outer_passes = 0;      ///< constraint updates at convergence (nested active set)
     unsigned int linear_iterations = 0; ///< Krylov iterations summed over the step
     double       residual = 0.;         ///< final residual norm
     std::string  reason;                ///< why it failed
