@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Contact strategies (active set vs load increment ratio) on the Hertz and indentation scenes,
-and the figures of doc/scenes/hertz.md and doc/scenes/indentation.md.
+"""Contact strategies (active set, nested active set, load increment ratio) on the Hertz and
+indentation scenes, and the figures of doc/scenes/hertz.md and doc/scenes/indentation.md.
 
 For each scene and strategy: load steps (sub-steps of the load increment ratio included), Newton
 iterations, user CPU and wall time of ausroll, and the error:
@@ -32,7 +32,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import runner  # noqa: E402
 
 E, NU, SIGMA_Y = 210000.0, 0.3, 700.0
-STRATEGIES = ["active set", "load increment ratio"]
+STRATEGIES = ["active set", "nested active set", "load increment ratio"]
 
 
 def hertz_table(run, radius, load, coordinate, min_load=0.0, nominal_dt=None):

@@ -61,14 +61,23 @@ namespace ausroll::solver
         log << "    (residual at round-off level, accepted)" << std::endl;
         converged = true;
       }
-      if (converged)
+      // Constraints that depend on the solution (nested active set) are updated once the
+      // reactions are accurate to 1e-4 of the force level: the last quadratic iterations of an
+      // intermediate pass would not change the statuses.
+      const bool nearly_converged
+          = constraints_ok && norm <= std::max(tolerance, 1e-4 * reference) && it > pass_start;
+      unsigned int changes = 0;
+      if (converged || nearly_converged)
       {
-        const unsigned int changes = problem.update_constraints_at_convergence(log);
-        if (changes == 0)
+        changes = problem.update_constraints_at_convergence(log);
+        if (changes == 0 && converged)
         {
           result.converged = true;
           return result;
         }
+      }
+      if (changes > 0)
+      {
         if (++result.outer_passes > max_outer_passes)
         {
           std::ostringstream msg;

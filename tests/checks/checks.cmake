@@ -344,12 +344,14 @@ ausroll_add_parallel_check(NAME indentation_np2
 ausroll_add_script_check(NAME ring_boundary_profile
   SCRIPT ${AUSROLL_CHECKS_DIR}/check_boundary_profile.py)
 
-# Short disk rolling (coarse ring, feed 0.762 mm + 20 degrees, load-increment ratio): force sign,
-# Coulomb bound |F_t| <= 1.05 mu |F_r|, symmetric indentation (F_x = 0 to 1e-6 |F|) and |F| within
-# the slab/Prandtl estimate [1990, 10250] N/mm (derivation in check_disk_rolling.py). About 5 s CPU.
+# Short disk rolling (coarse ring, feed 0.762 mm + 20 degrees in 1.25 degree steps), run with the
+# nested active set and with the load-increment ratio: force sign, Coulomb bound
+# |F_t| <= 1.05 mu |F_r|, symmetric indentation (F_x = 0 to 1e-6 |F|), |F| within the slab/Prandtl
+# estimate [1990, 10250] N/mm (derivation in check_disk_rolling.py), and the two strategies within
+# 5 % at every step, 2 % in the mean (measured 3.0 %, +0.7 %). About 3 s CPU.
 ausroll_add_script_check(NAME disk_rolling_short SCRIPT ${AUSROLL_CHECKS_DIR}/check_disk_rolling.py)
 
-# Disk rolling (short: feed + 20 degrees, load increment ratio with Coulomb friction) on 1 and 2
+# Disk rolling (short: feed + 20 degrees, nested active set with Coulomb friction) on 1 and 2
 # ranks: every history column within 1e-8 of its largest value.
 ausroll_add_parallel_check(NAME disk_rolling_short_np2
   PRM ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_short.prm HISTORY out/history.csv)
