@@ -159,7 +159,8 @@ namespace ausroll::contact
 
   template <int dim>
   unsigned int ContactOperator<dim>::update_geometry(const TrilinosWrappers::MPI::Vector &u,
-                                                     const bool allow_closing)
+                                                     const bool allow_closing,
+                                                     const bool only_unchanged_nodes)
   {
     unsigned int closed = 0;
     for (Node &n : nodes)
@@ -181,7 +182,8 @@ namespace ausroll::contact
             n.die = k;
           }
         }
-        if (allow_closing && !n.fresh && n.projection.valid
+        if (allow_closing && !n.fresh && (!only_unchanged_nodes || n.changes == 0)
+            && n.projection.valid
             && n.projection.gap < (n.changes == 0 ? gap_tolerance : -gap_tolerance)
             && n.changes < parameters.max_status_changes)
           switch_status(n,

@@ -20,9 +20,10 @@ namespace ausroll::contact
         "active set",
         Patterns::Selection("active set|nested active set|load increment ratio"),
         "active set: contact statuses are updated inside the Newton loop (semi-smooth "
-        "Newton); nested active set: Newton converges with fixed statuses, then the statuses "
-        "are updated at the converged state and Newton continues until none changes (robust "
-        "when many nodes change status per step, as in rolling with friction); load increment "
+        "Newton); nested active set: penetrating nodes close at once, the other changes "
+        "(opening, stick/slip) are decided at converged states and Newton continues until none "
+        "changes (robust when many nodes change status per step, as in rolling with friction); "
+        "load increment "
         "ratio: statuses are fixed during a sub-step and each step is scaled to the next status "
         "change (NOFEAP, Okamoto).");
     prm.declare_entry(

@@ -419,6 +419,8 @@ namespace ausroll::scene
     TimerOutput::Scope scope(*timer, "assembly");
     const bool         active_set
         = contact.active() && contact.strategy() == contact::ContactStrategy::active_set;
+    const bool nested
+        = contact.active() && contact.strategy() == contact::ContactStrategy::nested_active_set;
     contact.set_time(time);
     contact.start_iterate();
 
@@ -427,7 +429,12 @@ namespace ausroll::scene
     for (unsigned int pass = 0;; ++pass)
     {
       if (contact.active())
-        contact.update_geometry(solution_ghosted, active_set);
+        // Penetrating open nodes close at every iterate with both active-set strategies (a body
+        // held by contact alone needs them at once); the nested strategy closes so only nodes
+        // that have not changed in this step and judges all other changes at converged states
+        // (update_constraints_at_convergence()): a node opened by tension that re-penetrates
+        // slightly in the next iterates would otherwise chatter.
+        contact.update_geometry(solution_ghosted, active_set || nested, nested);
       build_newton_constraints();
 
       residual = 0.;

@@ -21,7 +21,7 @@ Checks (history.csv):
   - magnitude in [1990, 10250] N/mm (estimate above) at the end of the feed and while rolling;
   - rolling: the die revolved 20 degrees; feed stays 0.762 mm.
 Both strategies pass these checks. Strategies against each other: |F| at every nominal step within
-5 % and its mean over the rolling steps within 2 % (measured 3.0 % and +0.7 %). The load-increment
+5 % and its mean over the rolling steps within 2 % (measured 3.0 % and +0.4 %). The load-increment
 ratio switches each status exactly where it changes (sub-steps); the nested active set updates
 statuses at the end of a step, so with friction (path dependent) it differs by a first-order step
 error: on the 7.5 degree mesh the mean force over a revolution is +7.3 / +3.8 / +1.6 % off with

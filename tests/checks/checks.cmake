@@ -348,7 +348,7 @@ ausroll_add_script_check(NAME ring_boundary_profile
 # nested active set and with the load-increment ratio: force sign, Coulomb bound
 # |F_t| <= 1.05 mu |F_r|, symmetric indentation (F_x = 0 to 1e-6 |F|), |F| within the slab/Prandtl
 # estimate [1990, 10250] N/mm (derivation in check_disk_rolling.py), and the two strategies within
-# 5 % at every step, 2 % in the mean (measured 3.0 %, +0.7 %). About 3 s CPU.
+# 5 % at every step, 2 % in the mean (measured 3.0 %, +0.4 %). About 3 s CPU.
 ausroll_add_script_check(NAME disk_rolling_short SCRIPT ${AUSROLL_CHECKS_DIR}/check_disk_rolling.py)
 
 # Disk rolling (short: feed + 20 degrees, nested active set with Coulomb friction) on 1 and 2

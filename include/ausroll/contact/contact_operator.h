@@ -120,10 +120,13 @@ namespace ausroll::contact
 
     /**
      * Project all nodes at displacement @p u (ghosted). With @p allow_closing, open nodes that
-     * penetrate a die close (stick, or slip if frictionless). Returns the number of closed nodes.
+     * penetrate a die close (stick, or slip if frictionless); with @p only_unchanged_nodes only
+     * those that have not changed status in this step (nested active set: a node opened in this
+     * step closes again only at a converged state). Returns the number of closed nodes.
      */
     unsigned int update_geometry(const dealii::TrilinosWrappers::MPI::Vector &u,
-                                 const bool                                   allow_closing);
+                                 const bool                                   allow_closing,
+                                 const bool only_unchanged_nodes = false);
 
     /**
      * Nested active set: project all nodes at @p u and close the open nodes that penetrate a die.

@@ -57,10 +57,11 @@ namespace ausroll::solver
     virtual double increment_residual_product() const = 0;
 
     /**
-     * Called when the iteration has converged with the current constraints. A problem whose
-     * constraints depend on the converged state (contact statuses of the nested active set)
-     * updates them and returns the number of changes; the solver then re-assembles and continues
-     * (a new outer pass). The default changes nothing.
+     * Called when the iteration has converged with the current constraints, or nearly (residual
+     * below 1e-4 of the force level, constraints met). A problem whose constraints depend on the
+     * converged state (contact statuses of the nested active set) updates them and returns the
+     * number of changes; the solver then re-assembles and continues (a new outer pass). The
+     * default changes nothing.
      */
     virtual unsigned int update_constraints_at_convergence(dealii::ConditionalOStream &log)
     {
