@@ -23,6 +23,8 @@ Usage: check_gear_rolling.py OUT_DIR --direction S --theta0 DEG --rate DEG --t-r
    sign. F_t > 0 drags the flank material towards the tip. Checked at rolling steps away from
    theta_p (more than 1 deg: the stick-slip transition lags by about 0.5 deg) within 0.012
    (measured 0.093 .. 0.105 over whole passes).
+With --flank-from the direction checks 1 and 3 start at that revolution angle (thesis start with
+a die tip round: the round, not the involute flank, touches the gear flank at first).
 4. Optionally the flow direction: the sign of the mean tangential displacement of the flank near
    the pitch point, from scripts/gear_flank_analysis.py (u_t > 0: towards the tip).
 """
@@ -54,6 +56,10 @@ def main():
     p.add_argument("--flow-sign", type=int, choices=[-1, 1])
     p.add_argument("--flow-column", default="u_t_pitch")
     p.add_argument("--flank-script")
+    p.add_argument("--flank-from", type=float,
+                   help="check directions only from this revolution angle on (deg, S theta_G >= "
+                        "S value): before, a rounded die tip touches the flank (not involute on "
+                        "involute)")
     a = p.parse_args()
     rows = list(csv.DictReader(open(os.path.join(a.out, "history.csv"))))
     failures = []
@@ -68,6 +74,8 @@ def main():
         expected = math.tan(math.radians(a.pressure_angle + a.direction * theta))
         if fx >= 0.0:
             failures.append(f"t = {t}: F_x = {fx} is not negative")
+        if a.flank_from is not None and a.direction * (theta - a.flank_from) < 0.0:
+            continue
         if a.mu is not None and a.t_roll < t < a.t_roll + a.duration:
             theta_p = -a.direction * math.degrees(a.pitch_thickness / (2.0 * a.pitch_radius))
             if abs(theta - theta_p) > 1.0:

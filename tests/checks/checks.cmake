@@ -308,6 +308,19 @@ ausroll_add_check(NAME gear_rolling_flow_approach
   ARGS out --direction -1 --theta0 -6 --rate 14 --t-roll 0.1 --no-ratio --mu 0.1
        --force-range 50 1340)
 
+# Thesis start (die tip with a 0.5 mm round at the root of the flank, pushed in, rolled): the run
+# gets through the tip entry (with the sharp corner it folds the fillet cells), and once the round
+# has handed the contact to the involute flank (theta_G >= -10 deg; measured at -10.3 deg) the
+# flanks slide below the pitch point: F_t / F_n = -mu (rigid kinematics as above; tolerance 0.012,
+# measured -0.090 .. -0.096). Force bounds as above.
+configure_file(${AUSROLL_CHECKS_DIR}/scenes/gear_rolling_thesis_start_short.prm.in
+  ${CMAKE_CURRENT_BINARY_DIR}/gear_rolling_thesis_start_short.prm @ONLY)
+ausroll_add_check(NAME gear_rolling_thesis_start
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/gear_rolling_thesis_start_short.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_gear_rolling.py
+  ARGS out --direction 1 --theta0 -11 --rate 17 --t-roll 0.1 --no-ratio --mu 0.1
+       --flank-from -10 --force-range 50 1340)
+
 # ---------------------------------------------------------------- cylindrical punch indentation
 foreach(_scene indentation_elastic_quiet indentation_half indentation_short)
   configure_file(${AUSROLL_CHECKS_DIR}/scenes/${_scene}.prm.in ${CMAKE_CURRENT_BINARY_DIR}/${_scene}.prm @ONLY)
