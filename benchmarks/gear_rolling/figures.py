@@ -4,20 +4,18 @@ equivalent plastic strain (or another VTU point field) at one output step.
 
 Usage: /usr/bin/python3 benchmarks/gear_rolling/figures.py OUT_DIR STEP FIGURE.png
            [--field equivalent_plastic_strain] [--title TEXT] [--zoom x0 x1 y0 y1]
-STEP indexes the datasets of OUT_DIR/solution.pvd (-1: the last). Needs python3-vtk9, matplotlib.
+STEP indexes the datasets of OUT_DIR/solution.pvd (-1: the last). The drawing is done by
+scripts/plot_field.py (cell edges on; the run writes the deformed mesh, so no warp). Needs
+python3-vtk9, matplotlib.
 """
 
 import argparse
 import os
+import subprocess
+import sys
 import xml.etree.ElementTree as ET
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import vtk  # noqa: E402
-from matplotlib.collections import PolyCollection  # noqa: E402
-from vtk.util.numpy_support import vtk_to_numpy  # noqa: E402
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
 def main():
@@ -31,33 +29,13 @@ def main():
     a = p.parse_args()
     datasets = list(ET.parse(os.path.join(a.out, "solution.pvd")).getroot().iter("DataSet"))
     ds = datasets[a.step]
-    reader = vtk.vtkXMLPUnstructuredGridReader()
-    reader.SetFileName(os.path.join(a.out, ds.get("file")))
-    reader.Update()
-    grid = reader.GetOutput()
-    x = vtk_to_numpy(grid.GetPoints().GetData())
-    field = vtk_to_numpy(grid.GetPointData().GetArray(a.field))
-    polygons, values = [], []
-    for c in range(grid.GetNumberOfCells()):
-        cell = grid.GetCell(c)
-        ids = [cell.GetPointId(k) for k in range(cell.GetNumberOfPoints())]
-        polygons.append([(x[i][0], x[i][1]) for i in ids])
-        values.append(sum(field[i] for i in ids) / len(ids))
-    fig, ax = plt.subplots(figsize=(5.5, 6.5))
-    coll = PolyCollection(polygons, array=values, cmap="viridis", edgecolors="k", linewidths=0.15)
-    ax.add_collection(coll)
-    fig.colorbar(coll, ax=ax, label=a.field.replace("_", " "))
-    ax.autoscale_view()
+    command = [sys.executable, os.path.join(ROOT, "scripts", "plot_field.py"),
+               os.path.join(a.out, ds.get("file")), a.field, "-o", a.figure, "--edges",
+               "--title", f"{a.title} t = {float(ds.get('timestep')):.2f}".strip()]
     if a.zoom:
-        ax.set_xlim(a.zoom[0], a.zoom[1])
-        ax.set_ylim(a.zoom[2], a.zoom[3])
-    ax.set_aspect("equal")
-    ax.set_xlabel("x (mm)")
-    ax.set_ylabel("y (mm)")
-    ax.set_title(f"{a.title} t = {float(ds.get('timestep')):.2f}")
-    fig.tight_layout()
-    fig.savefig(a.figure, dpi=110)
+        command += ["--window"] + [str(v) for v in a.zoom]
+    return subprocess.run(command).returncode
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -12,47 +12,34 @@ Prints a Markdown table (pasted into doc/benchmarks.md and doc/scenes/gear_rolli
 """
 
 import argparse
-import csv
 import os
-import resource
 import subprocess
 import sys
-import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "benchmarks"))
+from ausroll_run import run_variant  # noqa: E402
 
 
 def run_level(args, level):
+    """Run the pass with `level` global refinements in <work>/ref<level> (benchmarks/ausroll_run.py:
+    one rank, one thread; wall and user + system CPU time of the process)."""
+    os.makedirs(args.work, exist_ok=True)
+    run = run_variant(args.ausroll, args.prm, args.work, f"ref{level}",
+                      [f"Geometry/Global refinements = {level}", "Output/Write VTU = true",
+                       f"Loading/End time = {args.end_time}",
+                       f"Loading/Number of steps = {args.steps}",
+                       f"Output/Interval = {args.steps}"] + args.set, reuse=args.reuse)
+    rows, wall, user = run.rows, run.wall, run.cpu
+    failed = run.returncode != 0 or float(rows[-1]["time"]) < args.end_time - 1e-9
+    if failed:
+        print(f"level {level}: exit {run.returncode}: {run.log.strip()[-300:]}", file=sys.stderr)
     work = os.path.join(args.work, f"ref{level}")
-    os.makedirs(work, exist_ok=True)
-    prm = os.path.join(work, "scene.prm")
-    subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "prm_variant.py"), args.prm, prm,
-                    f"Geometry/Global refinements = {level}", f"Output/Directory = {work}/out",
-                    "Output/Verbosity = quiet", f"Loading/End time = {args.end_time}",
-                    f"Loading/Number of steps = {args.steps}",
-                    f"Output/Interval = {args.steps}"], check=True)
-    history = os.path.join(work, "out", "history.csv")
-    user, failed = float("nan"), False
-    if args.reuse and os.path.exists(history):
-        rows = list(csv.DictReader(open(history)))
-        wall = float(rows[-1]["wall_seconds"])
-        failed = float(rows[-1]["time"]) < args.end_time - 1e-9
-    else:
-        before = resource.getrusage(resource.RUSAGE_CHILDREN)
-        start = time.time()
-        result = subprocess.run([args.ausroll, prm], capture_output=True, text=True, cwd=ROOT)
-        wall = time.time() - start
-        after = resource.getrusage(resource.RUSAGE_CHILDREN)
-        user = after.ru_utime - before.ru_utime
-        failed = result.returncode != 0
-        if failed:
-            print(f"level {level}: {result.stderr.strip()}", file=sys.stderr)
-        rows = list(csv.DictReader(open(history)))
     summary = {"d_n_min": "nan", "d_n_max": "nan"}
     if not failed:
         flank = subprocess.run([sys.executable,
                                 os.path.join(ROOT, "scripts", "gear_flank_analysis.py"),
-                                os.path.join(work, "out")], capture_output=True, text=True,
+                                work], capture_output=True, text=True,
                                check=True)
         summary = dict(kv.split("=") for kv in flank.stdout.split())
     last = rows[-1]
@@ -88,24 +75,27 @@ def main():
     p.add_argument("--compare-time", type=float, default=0.6,
                    help="die force compared at this time (contact near the pitch point)")
     p.add_argument("--reuse", action="store_true",
-                   help="use the histories of an earlier run (user CPU time unknown)")
+                   help="use the histories and times of an earlier run")
+    p.add_argument("--set", action="append", default=[],
+                   help="further prm override, e.g. 'Contact/Strategy = nested active set'")
     p.add_argument("--plot")
     args = p.parse_args()
     results = [run_level(args, level) for level in args.refinements]
     ref = results[-1]
     fref = (ref["fx"] ** 2 + ref["fy"] ** 2) ** 0.5
     print(f"| refinements | cells | DoFs | reached t | steps | Newton it. | cutbacks | wall (s) | "
-          f"user CPU (s) | peak die force (N/mm) | error | die force at t = {args.compare_time} "
-          f"(N/mm) | error | residual d_n min / max (um) |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+          f"CPU (s) | peak die force (N/mm) | error | die force at t = {args.compare_time} "
+          f"(N/mm) | error | residual d_n min / max (um) | error of d_n min |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in results:
         f = (r["fx"] ** 2 + r["fy"] ** 2) ** 0.5
         ef = abs(f - fref) / fref
         ea = abs(r["f_at"] - ref["f_at"]) / ref["f_at"]
+        ed = abs(r["dmin"] - ref["dmin"]) / abs(ref["dmin"])
         print(f"| {r['level']} | {r['cells']} | {r['dofs']} | {r['end']:.3f} | {r['steps']} | "
               f"{r['newton']} | {r['cutbacks']} | {r['wall']:.1f} | {r['user']:.1f} | {f:.1f} | "
               f"{ef:.4f} | {r['f_at']:.1f} | {ea:.4f} | {1000 * r['dmin']:.2f} / "
-              f"{1000 * r['dmax']:.2f} |")
+              f"{1000 * r['dmax']:.2f} | {ed:.3f} |")
     if args.plot:
         import matplotlib
 
@@ -119,6 +109,8 @@ def main():
                          for r in coarse], "o-", label="peak die force")
         ax.loglog(cost, [abs(r["f_at"] - ref["f_at"]) / ref["f_at"] for r in coarse], "s-",
                   label=f"die force at t = {args.compare_time}")
+        ax.loglog(cost, [abs(r["dmin"] - ref["dmin"]) / abs(ref["dmin"]) for r in coarse], "^-",
+                  label="residual flank deviation d_n min")
         for r, c in zip(coarse, cost):
             ax.annotate(f"ref {r['level']}", (c, abs(r["f_at"] - ref["f_at"]) / ref["f_at"]))
         ax.set_xlabel("wall time (s, shared machine)")

@@ -123,6 +123,11 @@ namespace ausroll::contact
                         "0",
                         Patterns::Double(0.),
                         "involute gear: root fillet radius (mm).");
+      prm.declare_entry("Tip radius",
+                        "0",
+                        Patterns::Double(0.),
+                        "involute gear: radius of the tip rounds, arcs tangent to the flank and "
+                        "the outside circle (mm; 0: sharp tip corners).");
       prm.declare_entry("Tooth axis angle",
                         "0",
                         Patterns::Double(),
@@ -252,6 +257,7 @@ namespace ausroll::contact
       d.dedendum = prm.get_double("Dedendum");
       d.tooth_thickness = prm.get_double("Tooth thickness");
       d.fillet_radius = prm.get_double("Root fillet radius");
+      d.tip_radius = prm.get_double("Tip radius");
       d.tooth_axis_angle = prm.get_double("Tooth axis angle");
       d.sector_teeth = prm.get_integer("Teeth in sector");
 

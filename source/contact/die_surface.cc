@@ -705,7 +705,8 @@ namespace ausroll::contact
 
   DieSurface DieSurface::involute_gear(const geometry::InvoluteGear &gear,
                                        const double                  tooth_axis_angle,
-                                       const unsigned int            n_teeth)
+                                       const unsigned int            n_teeth,
+                                       const double                  tip_round)
   {
     using geometry::FlankSide;
     const geometry::ToothGeometry &tooth = gear.tooth_geometry();
@@ -720,10 +721,34 @@ namespace ausroll::contact
     const double   r_fl = tooth.flank_start_radius;
     const double   psi = tooth.root_land_angle;
     const double   pitch = gear.angular_pitch();
-    const double   u_tip = gear.roll_angle_at(rt);
     const double   u_low = gear.roll_angle_at(std::max(r_fl, rb));
     const Point<2> o;
     const double   land_tol = 1e-12;
+
+    // Tip round (tooth axis along +x, positive flank): centre c at radius r_c = r_a - rho_t and
+    // at the normal distance rho_t inside the involute. The normal of an involute through a point
+    // is the tangent from it to the base circle, and the distance between two rotated copies of
+    // the involute along it is r_b times the rotation: phi_c = theta_h(r_c) - rho_t / r_b. The
+    // tangent point Q on the flank lies on that base tangent at r_b u_Q = rho_t +
+    // sqrt(r_c^2 - r_b^2) from the tangency point; the tangent point on the outside circle lies
+    // on the ray through c.
+    require(tip_round >= 0.0, die_entry, "the tip round radius must not be negative");
+    double   u_tip = gear.roll_angle_at(rt);
+    double   tip_angle = tooth.tip_half_angle;
+    Point<2> round_center;
+    double   round_from = 0.0;
+    if (tip_round > 0.0)
+    {
+      const double r_c = rt - tip_round;
+      require(r_c > rb, die_entry, "the tip round must end above the base circle");
+      tip_angle = gear.half_thickness_angle(r_c) - tip_round / rb;
+      require(tip_angle > 0.0, die_entry, "the tip round is too large: no tip land remains");
+      u_tip = (tip_round + std::sqrt(r_c * r_c - rb * rb)) / rb;
+      require(u_tip > u_low, die_entry, "the tip round reaches below the involute flank");
+      round_center = Point<2>(r_c * unit(tip_angle));
+      const Point<2> q = gear.flank_point(rb * std::sqrt(1.0 + u_tip * u_tip), FlankSide::positive);
+      round_from = polar_angle(q - round_center);
+    }
 
     std::vector<DieSegment> segments;
     // One tooth with axis at polar angle a, travelled clockwise (root land side at a + psi first).
@@ -744,8 +769,17 @@ namespace ausroll::contact
         segments.push_back(
             DieSegment::line(p_pos, rotate(gear.flank_point(rb, FlankSide::positive), a)));
       segments.push_back(DieSegment::involute(o, rb, a + tooth.base_half_angle, -1, u_low, u_tip));
-      segments.push_back(
-          DieSegment::arc(o, rt, a + tooth.tip_half_angle, -2.0 * tooth.tip_half_angle));
+      // convex tip rounds travelled clockwise: from the flank to the outside circle
+      const double round_sweep = -positive_modulo(round_from - tip_angle, 2.0 * M_PI);
+      if (tip_round > 0.0)
+        segments.push_back(
+            DieSegment::arc(rotate(round_center, a), tip_round, a + round_from, round_sweep));
+      segments.push_back(DieSegment::arc(o, rt, a + tip_angle, -2.0 * tip_angle));
+      if (tip_round > 0.0)
+        segments.push_back(DieSegment::arc(rotate(Point<2>(round_center[0], -round_center[1]), a),
+                                           tip_round,
+                                           a - tip_angle,
+                                           round_sweep));
       segments.push_back(DieSegment::involute(o, rb, a - tooth.base_half_angle, +1, u_tip, u_low));
       if (tooth.has_radial_flank)
         segments.push_back(

@@ -105,13 +105,15 @@ namespace ausroll::contact
                           p.teeth, p.diametral_pitch, p.pressure_angle * degree, proportions)
                       : geometry::InvoluteGear(
                           p.teeth, p.module, p.pressure_angle * degree, proportions);
-            return std::make_unique<DieSurface>(
-                DieSurface::involute_gear(gear, p.tooth_axis_angle * degree, p.sector_teeth));
+            return std::make_unique<DieSurface>(DieSurface::involute_gear(
+                gear, p.tooth_axis_angle * degree, p.sector_teeth, p.tip_radius));
           }
           catch (const std::exception &e)
           {
-            throw InputError(path + "Number of teeth: invalid gear (" + std::string(e.what())
-                             + ")");
+            const std::string what = e.what();
+            if (what.find("tip round") != std::string::npos)
+              throw InputError(path + "Tip radius: " + what);
+            throw InputError(path + "Number of teeth: invalid gear (" + what + ")");
           }
         }
       }

@@ -23,8 +23,12 @@ Usage: check_gear_rolling.py OUT_DIR --direction S --theta0 DEG --rate DEG --t-r
    sign. F_t > 0 drags the flank material towards the tip. Checked at rolling steps away from
    theta_p (more than 1 deg: the stick-slip transition lags by about 0.5 deg) within 0.012
    (measured 0.093 .. 0.105 over whole passes).
+With --flank-from the direction checks 1 and 3 start at that revolution angle (thesis start with
+a die tip round: the round, not the involute flank, touches the gear flank at first).
 4. Optionally the flow direction: the sign of the mean tangential displacement of the flank near
-   the pitch point, from scripts/gear_flank_analysis.py (u_t > 0: towards the tip).
+   the pitch point (or --flow-column, e.g. u_t_upper on the addendum), from
+   scripts/gear_flank_analysis.py (u_t > 0: towards the tip); with --reference-run the difference
+   to a reference run (frictionless: the part of the residual flow that friction causes).
 """
 
 import argparse
@@ -54,6 +58,15 @@ def main():
     p.add_argument("--flow-sign", type=int, choices=[-1, 1])
     p.add_argument("--flow-column", default="u_t_pitch")
     p.add_argument("--flank-script")
+    p.add_argument("--reference-run", nargs=3, metavar=("AUSROLL", "PRM", "OUT_DIR"),
+                   help="run this reference scene (e.g. frictionless) and check the flow column "
+                        "of OUT minus that of the reference (the part the difference causes)")
+    p.add_argument("--flow-min", type=float, default=0.0,
+                   help="the flow value times --flow-sign must exceed this (mm)")
+    p.add_argument("--flank-from", type=float,
+                   help="check directions only from this revolution angle on (deg, S theta_G >= "
+                        "S value): before, a rounded die tip touches the flank (not involute on "
+                        "involute)")
     a = p.parse_args()
     rows = list(csv.DictReader(open(os.path.join(a.out, "history.csv"))))
     failures = []
@@ -68,6 +81,8 @@ def main():
         expected = math.tan(math.radians(a.pressure_angle + a.direction * theta))
         if fx >= 0.0:
             failures.append(f"t = {t}: F_x = {fx} is not negative")
+        if a.flank_from is not None and a.direction * (theta - a.flank_from) < 0.0:
+            continue
         if a.mu is not None and a.t_roll < t < a.t_roll + a.duration:
             theta_p = -a.direction * math.degrees(a.pitch_thickness / (2.0 * a.pitch_radius))
             if abs(theta - theta_p) > 1.0:
@@ -93,13 +108,24 @@ def main():
         print(f"check_gear_rolling: worst |F_t/F_n - mu sign(theta_G - theta_p)| = {worst_mu:.5f} "
               f"(tol {a.mu_tol})")
     if a.flow_sign is not None:
-        out = subprocess.run([sys.executable, a.flank_script, a.out], capture_output=True,
-                             text=True, check=True).stdout
-        values = dict(kv.split("=") for kv in out.split())
-        u = float(values[a.flow_column])
-        print(f"check_gear_rolling: {a.flow_column} = {u:.6g} mm (expected sign {a.flow_sign:+d})")
-        if not u * a.flow_sign > 0.0:
-            failures.append(f"flow direction: {a.flow_column} = {u} has the wrong sign")
+        def flank_value(directory):
+            out = subprocess.run([sys.executable, a.flank_script, directory],
+                                 capture_output=True, text=True, check=True).stdout
+            return float(dict(kv.split("=") for kv in out.split())[a.flow_column])
+
+        u = flank_value(a.out)
+        what = a.flow_column
+        if a.reference_run:
+            ausroll, prm, ref_out = a.reference_run
+            subprocess.run([ausroll, prm], capture_output=True, check=True)
+            u_ref = flank_value(ref_out)
+            print(f"check_gear_rolling: {what} = {u:.6g} mm, reference run {u_ref:.6g} mm")
+            u -= u_ref
+            what += " - reference"
+        print(f"check_gear_rolling: {what} = {u:.6g} mm (expected sign {a.flow_sign:+d}, "
+              f"magnitude > {a.flow_min} mm)")
+        if not u * a.flow_sign > a.flow_min:
+            failures.append(f"flow direction: {what} = {u} has the wrong sign or is too small")
     for msg in failures:
         print("FAIL:", msg)
     return 1 if failures else 0

@@ -76,6 +76,7 @@ namespace ausroll::contact
     double       dedendum = -1.;        ///< `Dedendum` (mm; <0: 1.25 module)
     double tooth_thickness = -1.;  ///< `Tooth thickness` at the pitch circle (mm; <0: half pitch)
     double fillet_radius = 0.;     ///< `Root fillet radius` (mm)
+    double tip_radius = 0.;        ///< `Tip radius` (mm; 0: sharp tip corners)
     double tooth_axis_angle = 0.;  ///< `Tooth axis angle` (degrees)
     unsigned int sector_teeth = 0; ///< `Teeth in sector` (0: whole gear)
 

@@ -329,10 +329,15 @@ namespace ausroll::contact
      * n_teeth teeth symmetric about @p tooth_axis_angle is built (tooth k at
      * tooth_axis_angle + ((n_teeth - 1)/2 - k) 2 pi/z), from the middle of the space before the
      * first tooth to the middle of the space after the last one.
+     * With @p tip_round > 0 each tip corner is replaced by a circular arc of that radius tangent
+     * to the involute flank and to the outside circle (centre at radius r_a - tip_round, at the
+     * normal distance tip_round inside the flank: polar angle theta_h(r_a - tip_round) -
+     * tip_round / r_b from the tooth axis); it must leave a tip land and meet the involute part.
      */
     static DieSurface involute_gear(const geometry::InvoluteGear &gear,
                                     double                        tooth_axis_angle = 0.0,
-                                    unsigned int                  n_teeth = 0);
+                                    unsigned int                  n_teeth = 0,
+                                    double                        tip_round = 0.0);
 
     /** The same surface travelled backwards: normals flip, the die material changes side. */
     DieSurface reversed() const;
