@@ -6,10 +6,39 @@ Usage: prm_variant.py BASE.prm OUT.prm "Section/Sub/Entry = value" ...
 Each override replaces the value of an existing `set Entry = ...` line inside the given subsection
 path, or, if the entry is not set in BASE, adds the line at the end of that subsection (the
 subsection is created at the end of the file if it does not exist). Relative file names in BASE
-(`Mesh file`, `Points file`) are not rewritten: write OUT next to BASE or use absolute paths.
+(`include` lines, `Mesh file`, `Points file`) that name a file next to BASE are made absolute, so
+that OUT may be written anywhere.
 """
 
+import os
 import sys
+
+FILE_ENTRIES = ("Mesh file", "Points file")
+
+
+def absolute_file_names(lines, base_dir):
+    """Make the relative file names of include lines and file entries absolute (relative to
+    @p base_dir) when that file exists."""
+    out = []
+    for line in lines:
+        code, hash_, comment = line.partition("#")
+        words = code.split(None, 1)
+        indent = line[: len(line) - len(line.lstrip())]
+        if len(words) == 2 and words[0] == "include":
+            name = words[1].strip()
+            candidate = os.path.join(base_dir, name)
+            if not os.path.isabs(name) and os.path.exists(candidate):
+                line = f"{indent}include {os.path.abspath(candidate)}" + (
+                    f" {hash_}{comment}" if hash_ else "\n")
+        elif len(words) == 2 and words[0] == "set" and "=" in words[1]:
+            entry, value = (x.strip() for x in words[1].split("=", 1))
+            candidate = os.path.join(base_dir, value)
+            if (entry in FILE_ENTRIES and value and not os.path.isabs(value)
+                    and os.path.exists(candidate)):
+                line = f"{indent}set {entry} = {os.path.abspath(candidate)}" + (
+                    f" {hash_}{comment}" if hash_ else "\n")
+        out.append(line)
+    return out
 
 
 def parse_override(text):
@@ -65,7 +94,7 @@ def main():
         print(__doc__, file=sys.stderr)
         return 1
     with open(sys.argv[1]) as f:
-        lines = f.readlines()
+        lines = absolute_file_names(f.readlines(), os.path.dirname(os.path.abspath(sys.argv[1])))
     for text in sys.argv[3:]:
         sections, entry, value = parse_override(text)
         lines = apply(lines, sections, entry, value)
