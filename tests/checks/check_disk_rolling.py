@@ -23,8 +23,8 @@ Checks (history.csv):
 Both strategies pass these checks. Strategies against each other: |F| at every nominal step within
 5 % and its mean over the rolling steps within 2 % (measured 3.0 % and +0.4 %). The load-increment
 ratio switches each status exactly where it changes (sub-steps); the nested active set updates
-statuses at the end of a step, so with friction (path dependent) it differs by a first-order step
-error: on the 7.5 degree mesh the mean force over a revolution is +7.3 / +3.8 / +1.6 % off with
+statuses at the end of a step, so with friction (path dependent) it differs by a step-size
+error: on the 7.5 degree mesh the mean force over a revolution is +10.6 / +5.8 / +1.7 % off with
 5 / 2.5 / 1.25 degree steps (doc/scenes/disk_rolling.md).
 
 Usage: check_disk_rolling.py AUSROLL SOURCE_DIR
