@@ -53,7 +53,7 @@ add_test(NAME check/bad_input
 set_tests_properties(check/bad_input PROPERTIES LABELS check TIMEOUT 600)
 
 # ---------------------------------------------------------------- contact
-foreach(_scene block_slide_ratio hertz_ratio hertz_quiet)
+foreach(_scene block_slide_ratio block_slide_nested hertz_ratio hertz_nested hertz_quiet)
   configure_file(${AUSROLL_CHECKS_DIR}/scenes/${_scene}.prm.in ${CMAKE_CURRENT_BINARY_DIR}/${_scene}.prm @ONLY)
 endforeach()
 
@@ -71,7 +71,7 @@ ausroll_add_check(NAME include_relative_path
   ARGS out/history.csv --value die_punch_force_y 1 -4615.384615 1e-9)
 
 # Coulomb friction: stick/slip zones while pressing, F_x/F_y = -mu in full slip (exact), nothing
-# left after lift-off. Same assertions for both contact strategies.
+# left after lift-off. Same assertions for all three contact strategies.
 set(_slide_asserts
   --range die_punch_stick_nodes 1 1 16 --range die_punch_slip_nodes 1 1 16
   --ratio die_punch_force_x die_punch_force_y 2 -0.2 1e-9
@@ -83,6 +83,9 @@ ausroll_add_check(NAME contact_block_slide
   CHECK ${AUSROLL_CHECKS_DIR}/check_history.py ARGS out/history.csv ${_slide_asserts})
 ausroll_add_check(NAME contact_block_slide_ratio
   PRM ${CMAKE_CURRENT_BINARY_DIR}/block_slide_ratio.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_history.py ARGS out/history.csv ${_slide_asserts})
+ausroll_add_check(NAME contact_block_slide_nested
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/block_slide_nested.prm
   CHECK ${AUSROLL_CHECKS_DIR}/check_history.py ARGS out/history.csv ${_slide_asserts})
 
 # Hertz: contact half-width a and peak pressure p0 within 1 % of plane-strain Hertz theory at the
@@ -96,6 +99,9 @@ ausroll_add_check(NAME contact_hertz
   CHECK ${AUSROLL_CHECKS_DIR}/check_hertz.py ARGS ${_hertz_args})
 ausroll_add_check(NAME contact_hertz_ratio
   PRM ${CMAKE_CURRENT_BINARY_DIR}/hertz_ratio.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_hertz.py ARGS ${_hertz_args})
+ausroll_add_check(NAME contact_hertz_nested
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/hertz_nested.prm
   CHECK ${AUSROLL_CHECKS_DIR}/check_hertz.py ARGS ${_hertz_args})
 
 # Contact in parallel: np = 2 gives the np = 1 history (statuses, forces) to 1e-8.

@@ -1,0 +1,168 @@
+/**
+ * Newton solver with constraints that are updated at converged states (the mechanism behind
+ * `Contact/Strategy = nested active set`), on a one-unknown model of a node against a stop:
+ * r(u) = u^3 + u - f while the node is free, u = g while it rests on the stop (u <= g). The stop
+ * closes when a converged free state passes it, and opens when the reaction at a converged closed
+ * state is tensile: at u = g the residual r is the force the stop exerts; r < 0 pushes the node
+ * back (compression), r > 0 would pull it (tension). The exact answers are u = root of
+ * u^3 + u = f (free) or u = g (closed).
+ */
+#include <ausroll/solver/newton_solver.h>
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <string>
+
+namespace
+{
+  using namespace ausroll::solver;
+
+  class StopProblem : public NonlinearProblem
+  {
+  public:
+    StopProblem(const double f, const double g, const bool closed)
+        : f(f)
+        , g(g)
+        , closed(closed)
+    {
+    }
+
+    bool assemble(const bool, std::string &) override
+    {
+      ++assemblies;
+      residual = u * u * u + u - f;
+      jacobian = 3. * u * u + 1.;
+      return true;
+    }
+    double          residual_norm() const override { return closed ? 0. : std::abs(residual); }
+    double          reference_force() const override { return std::abs(f); }
+    double          constraint_violation() const override { return closed ? std::abs(u - g) : 0.; }
+    LinearSolveInfo solve_for_increment() override
+    {
+      start = u;
+      increment = closed ? g - u : -residual / jacobian;
+      return {};
+    }
+    void   apply_increment(const double step) override { u = start + step * increment; }
+    double length_scale() const override { return 1.; }
+    double increment_residual_product() const override
+    {
+      return closed ? 0. : increment * residual;
+    }
+    unsigned int update_constraints_at_convergence(dealii::ConditionalOStream &) override
+    {
+      ++updates;
+      if (always_change)
+        return 1;
+      if (!closed && u > g)
+      {
+        closed = true; // passed the stop: close
+        return 1;
+      }
+      if (closed && residual > 0.)
+      {
+        closed = false; // the stop would have to pull: open
+        return 1;
+      }
+      return 0;
+    }
+
+    double       f, g;
+    bool         closed;
+    bool         always_change = false;
+    double       u = 0., start = 0., increment = 0., residual = 0., jacobian = 1.;
+    unsigned int assemblies = 0, updates = 0;
+  };
+
+  SolverParameters parameters()
+  {
+    SolverParameters p;
+    p.residual_tolerance = 1e-12;
+    p.absolute_tolerance = 1e-14;
+    return p;
+  }
+
+  /** Root of u^3 + u = f by bisection (independent of Newton). */
+  double free_solution(const double f)
+  {
+    double a = -10., b = 10.;
+    for (unsigned int k = 0; k < 200; ++k)
+    {
+      const double m = 0.5 * (a + b);
+      (m * m * m + m - f > 0. ? b : a) = m;
+    }
+    return 0.5 * (a + b);
+  }
+} // namespace
+
+// No constraint change: converged in the first pass, quadratically (u^3 + u = 10 from u = 0 takes
+// 6-8 iterations with line search; 12 would mean linear convergence).
+TEST(NewtonSolver, FixedConstraintsConvergeInOnePass)
+{
+  dealii::ConditionalOStream log(std::cout, false);
+  StopProblem                problem(10., 100., false);
+  const NewtonResult         result = NewtonSolver(parameters()).solve(problem, log);
+  ASSERT_TRUE(result.converged) << result.reason;
+  EXPECT_EQ(result.outer_passes, 0u);
+  EXPECT_LE(result.iterations, 10u);
+  EXPECT_NEAR(problem.u, free_solution(10.), 1e-12);
+}
+
+// The free solution (u = 2 for f = 10) passes the stop g = 1.5: the converged free state closes
+// the node, Newton continues with u = g, the reaction r = g^3 + g - f = -5.125 is compressive,
+// nothing changes: one outer pass, answer u = g exactly.
+TEST(NewtonSolver, ConstraintClosedAtConvergedStateThenConverges)
+{
+  dealii::ConditionalOStream log(std::cout, false);
+  StopProblem                problem(10., 1.5, false);
+  const NewtonResult         result = NewtonSolver(parameters()).solve(problem, log);
+  ASSERT_TRUE(result.converged) << result.reason;
+  EXPECT_EQ(result.outer_passes, 1u);
+  EXPECT_TRUE(problem.closed);
+  EXPECT_NEAR(problem.u, 1.5, 1e-14);
+  EXPECT_NEAR(problem.residual, -5.125, 1e-12); // the stop pushes back
+}
+
+// Starting closed on a stop that would have to pull (f = 10, g = 3: r = 27 + 3 - 10 = 20 > 0,
+// tension): the converged closed state opens the node, Newton finds the free root u = 2 < g, which
+// stays open: one outer pass.
+TEST(NewtonSolver, ConstraintOpenedAtConvergedState)
+{
+  dealii::ConditionalOStream log(std::cout, false);
+  StopProblem                problem(10., 3., true);
+  const NewtonResult         result = NewtonSolver(parameters()).solve(problem, log);
+  ASSERT_TRUE(result.converged) << result.reason;
+  EXPECT_EQ(result.outer_passes, 1u);
+  EXPECT_FALSE(problem.closed);
+  EXPECT_NEAR(problem.u, free_solution(10.), 1e-12);
+}
+
+// Constraints that change at every converged state: the solver reports non-convergence after 30
+// passes instead of looping for ever (the load step is then cut back).
+TEST(NewtonSolver, CyclingConstraintsStopAfterThirtyPasses)
+{
+  dealii::ConditionalOStream log(std::cout, false);
+  StopProblem                problem(10., 100., false);
+  problem.always_change = true;
+  const NewtonResult result = NewtonSolver(parameters()).solve(problem, log);
+  EXPECT_FALSE(result.converged);
+  EXPECT_NE(result.reason.find("still change after 30"), std::string::npos) << result.reason;
+  EXPECT_EQ(result.outer_passes, 31u);
+}
+
+// Statuses are judged before full convergence (residual below 1e-4 of the force level): the
+// update is called at least once before the final, tight convergence, and the answer is still
+// exact.
+TEST(NewtonSolver, ConstraintsJudgedBeforeFullConvergence)
+{
+  dealii::ConditionalOStream log(std::cout, false);
+  StopProblem                problem(10., 100., false);
+  const NewtonResult         result = NewtonSolver(parameters()).solve(problem, log);
+  ASSERT_TRUE(result.converged);
+  EXPECT_GE(problem.updates, 2u); // near convergence and at convergence
+  EXPECT_NEAR(problem.u, free_solution(10.), 1e-12);
+}
