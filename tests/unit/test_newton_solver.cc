@@ -86,6 +86,13 @@ namespace
     return p;
   }
 
+  /** Solve @p problem with the tight tolerances above, silently. */
+  NewtonResult solve(StopProblem &problem)
+  {
+    dealii::ConditionalOStream log(std::cout, false);
+    return NewtonSolver(parameters()).solve(problem, log);
+  }
+
   /** Root of u^3 + u = f by bisection (independent of Newton). */
   double free_solution(const double f)
   {
@@ -103,9 +110,8 @@ namespace
 // 6-8 iterations with line search; 12 would mean linear convergence).
 TEST(NewtonSolver, FixedConstraintsConvergeInOnePass)
 {
-  dealii::ConditionalOStream log(std::cout, false);
-  StopProblem                problem(10., 100., false);
-  const NewtonResult         result = NewtonSolver(parameters()).solve(problem, log);
+  StopProblem        problem(10., 100., false);
+  const NewtonResult result = solve(problem);
   ASSERT_TRUE(result.converged) << result.reason;
   EXPECT_EQ(result.outer_passes, 0u);
   EXPECT_LE(result.iterations, 10u);
@@ -117,9 +123,8 @@ TEST(NewtonSolver, FixedConstraintsConvergeInOnePass)
 // nothing changes: one outer pass, answer u = g exactly.
 TEST(NewtonSolver, ConstraintClosedAtConvergedStateThenConverges)
 {
-  dealii::ConditionalOStream log(std::cout, false);
-  StopProblem                problem(10., 1.5, false);
-  const NewtonResult         result = NewtonSolver(parameters()).solve(problem, log);
+  StopProblem        problem(10., 1.5, false);
+  const NewtonResult result = solve(problem);
   ASSERT_TRUE(result.converged) << result.reason;
   EXPECT_EQ(result.outer_passes, 1u);
   EXPECT_TRUE(problem.closed);
@@ -132,9 +137,8 @@ TEST(NewtonSolver, ConstraintClosedAtConvergedStateThenConverges)
 // stays open: one outer pass.
 TEST(NewtonSolver, ConstraintOpenedAtConvergedState)
 {
-  dealii::ConditionalOStream log(std::cout, false);
-  StopProblem                problem(10., 3., true);
-  const NewtonResult         result = NewtonSolver(parameters()).solve(problem, log);
+  StopProblem        problem(10., 3., true);
+  const NewtonResult result = solve(problem);
   ASSERT_TRUE(result.converged) << result.reason;
   EXPECT_EQ(result.outer_passes, 1u);
   EXPECT_FALSE(problem.closed);
@@ -145,10 +149,9 @@ TEST(NewtonSolver, ConstraintOpenedAtConvergedState)
 // passes instead of looping for ever (the load step is then cut back).
 TEST(NewtonSolver, CyclingConstraintsStopAfterThirtyPasses)
 {
-  dealii::ConditionalOStream log(std::cout, false);
-  StopProblem                problem(10., 100., false);
+  StopProblem problem(10., 100., false);
   problem.always_change = true;
-  const NewtonResult result = NewtonSolver(parameters()).solve(problem, log);
+  const NewtonResult result = solve(problem);
   EXPECT_FALSE(result.converged);
   EXPECT_NE(result.reason.find("still change after 30"), std::string::npos) << result.reason;
   EXPECT_EQ(result.outer_passes, 31u);
@@ -159,9 +162,8 @@ TEST(NewtonSolver, CyclingConstraintsStopAfterThirtyPasses)
 // exact.
 TEST(NewtonSolver, ConstraintsJudgedBeforeFullConvergence)
 {
-  dealii::ConditionalOStream log(std::cout, false);
-  StopProblem                problem(10., 100., false);
-  const NewtonResult         result = NewtonSolver(parameters()).solve(problem, log);
+  StopProblem        problem(10., 100., false);
+  const NewtonResult result = solve(problem);
   ASSERT_TRUE(result.converged);
   EXPECT_GE(problem.updates, 2u); // near convergence and at convergence
   EXPECT_NEAR(problem.u, free_solution(10.), 1e-12);
