@@ -222,6 +222,8 @@ namespace ausroll::scene
     DoFTools::make_sparsity_pattern(
         dof_handler, dsp, hanging_constraints, /*keep_constrained=*/true);
     SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, relevant_dofs);
+    // the kept factorisation refers to the old matrix: release it before that matrix goes
+    linear_solver.matrix_pattern_changed();
     system_matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
 
     for (auto *v : {&solution,

@@ -9,6 +9,7 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <Amesos.h>
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 
@@ -67,6 +68,57 @@ namespace ausroll::solver
   }
 
   template <int dim>
+  void LinearSolver<dim>::matrix_pattern_changed()
+  {
+    direct_solver.reset();
+    direct_problem.reset();
+    factored_matrix = nullptr;
+    factored_package.clear();
+  }
+
+  template <int dim>
+  void LinearSolver<dim>::solve_direct(const TrilinosWrappers::SparseMatrix &A,
+                                       TrilinosWrappers::MPI::Vector        &x,
+                                       const TrilinosWrappers::MPI::Vector  &b,
+                                       const std::string                    &package) const
+  {
+    const Epetra_CrsMatrix &matrix = A.trilinos_matrix();
+    if (!direct_solver || factored_matrix != &matrix || factored_package != package)
+    {
+      // new pattern (or package): analysis and symbolic factorisation
+      direct_solver.reset();
+      direct_problem = std::make_unique<Epetra_LinearProblem>();
+      direct_problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&matrix));
+      Amesos factory;
+      direct_solver.reset(factory.Create(package.c_str(), *direct_problem));
+      AssertThrow(direct_solver, ExcMessage("Amesos package " + package + " is not available"));
+      factored_matrix = nullptr;
+      AssertThrow(direct_solver->SymbolicFactorization() == 0,
+                  ExcMessage(package + ": symbolic factorisation failed"));
+      factored_matrix = &matrix;
+      factored_package = package;
+    }
+    try
+    {
+      AssertThrow(direct_solver->NumericFactorization() == 0,
+                  ExcMessage(package + ": numeric factorisation failed"));
+      direct_problem->SetLHS(&x.trilinos_vector());
+      direct_problem->SetRHS(const_cast<Epetra_MultiVector *>(
+          static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+      AssertThrow(direct_solver->Solve() == 0, ExcMessage(package + ": solve failed"));
+    }
+    catch (...)
+    {
+      // start from a fresh analysis next time
+      direct_solver.reset();
+      direct_problem.reset();
+      factored_matrix = nullptr;
+      factored_package.clear();
+      throw;
+    }
+  }
+
+  template <int dim>
   LinearSolveInfo LinearSolver<dim>::solve(const TrilinosWrappers::SparseMatrix &A,
                                            TrilinosWrappers::MPI::Vector        &x,
                                            const TrilinosWrappers::MPI::Vector  &b) const
@@ -86,12 +138,10 @@ namespace ausroll::solver
               || (parameters.direct_package == "automatic"
                   && (A.m() >= automatic_klu_limit
                       || Utilities::MPI::n_mpi_processes(A.get_mpi_communicator()) > 1));
+        (void)control;
         try
         {
-          TrilinosWrappers::SolverDirect::AdditionalData data(
-              false, mumps ? "Amesos_Mumps" : "Amesos_Klu");
-          TrilinosWrappers::SolverDirect solver(control, data);
-          solver.solve(A, x, b);
+          solve_direct(A, x, b, mumps ? "Amesos_Mumps" : "Amesos_Klu");
         }
         catch (const std::exception &)
         {
@@ -100,9 +150,7 @@ namespace ausroll::solver
           // limit: retry with it before giving up.
           if (!mumps)
             throw;
-          TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Klu");
-          TrilinosWrappers::SolverDirect                 solver(control, data);
-          solver.solve(A, x, b);
+          solve_direct(A, x, b, "Amesos_Klu");
         }
       }
       else

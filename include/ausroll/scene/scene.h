@@ -156,8 +156,10 @@ namespace ausroll::scene
     mechanics::BoundaryConditions<dim>           boundary_conditions;
     std::unique_ptr<mechanics::Assembler<dim>>   assembler;
     contact::ContactOperator<dim>                contact;
-    solver::LinearSolver<dim>                    linear_solver;
-    solver::NewtonSolver                         newton;
+    /** Declared after system_matrix: destroyed first (its kept direct factorisation refers to
+        the matrix). */
+    solver::LinearSolver<dim> linear_solver;
+    solver::NewtonSolver      newton;
 
     double       time = 0.;           ///< pseudo-time of the current iterate
     double       last_step_size = 0.; ///< size of the last converged step (predictor)

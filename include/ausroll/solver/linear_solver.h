@@ -11,7 +11,12 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <Amesos_BaseSolver.h>
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_LinearProblem.h>
+
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace ausroll::solver
@@ -40,13 +45,35 @@ namespace ausroll::solver
     void set_rigid_body_modes(const dealii::DoFHandler<dim> &dof_handler,
                               const dealii::Mapping<dim>    &mapping);
 
+    /**
+     * The matrix is about to be (re)initialised with a new sparsity pattern (call before every
+     * reinit of the matrix, i.e. after every mesh change, while the old matrix still exists: the
+     * kept solver refers to it): the direct solver's symbolic factorisation is redone at the next
+     * solve. Between such calls
+     * the symbolic factorisation (ordering, elimination tree) is kept and only the numeric one is
+     * redone for new matrix values.
+     */
+    void matrix_pattern_changed();
+
     /** Solve A x = b. Throws RunFailure if the solver fails. */
     LinearSolveInfo solve(const dealii::TrilinosWrappers::SparseMatrix &A,
                           dealii::TrilinosWrappers::MPI::Vector        &x,
                           const dealii::TrilinosWrappers::MPI::Vector  &b) const;
 
   private:
+    /** Direct solve with a kept symbolic factorisation of @p A by Amesos package @p package. */
+    void solve_direct(const dealii::TrilinosWrappers::SparseMatrix &A,
+                      dealii::TrilinosWrappers::MPI::Vector        &x,
+                      const dealii::TrilinosWrappers::MPI::Vector  &b,
+                      const std::string                            &package) const;
+
     LinearSolverParameters parameters;
+    /** Amesos problem and solver of the direct path, kept between solves with one pattern. */
+    mutable std::unique_ptr<Epetra_LinearProblem> direct_problem;
+    mutable std::unique_ptr<Amesos_BaseSolver>    direct_solver;
+    /** What direct_solver was built for: matrix object and package (empty: nothing). */
+    mutable const Epetra_CrsMatrix *factored_matrix = nullptr;
+    mutable std::string             factored_package;
     /** Rigid-body modes on the locally owned DoFs, mode-major. */
     std::vector<std::vector<double>> rigid_body_modes;
   };
