@@ -22,6 +22,8 @@ import os
 import subprocess
 import sys
 
+from checklist import Checklist  # tests/checks/checklist.py (next to this script)
+
 A_IN, B_OUT, E, NU, P = 17.80, 43.55, 68950.0, 0.33, 100.0
 
 
@@ -53,12 +55,7 @@ def run(ausroll, source, name, np, overrides):
 
 def main():
     ausroll, source = sys.argv[1], sys.argv[2]
-    failures = []
-
-    def check(label, ok):
-        print(f"{'ok  ' if ok else 'FAIL'} {label}")
-        if not ok:
-            failures.append(label)
+    check = Checklist()
 
     u_a = lame_u_inner()
     print(f"Lame: u(a) = {u_a:.8f} mm")
@@ -103,10 +100,7 @@ def main():
         abs(ra[k] - rb[k]) < 1e-9 for ra, rb in zip(a, b) for k in ("x", "y", "current_x",
                                                                      "current_y"))
     check("np = 2 profile equals np = 1 (1e-9 mm)", same)
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    return 0
+    return check.exit_status()
 
 
 if __name__ == "__main__":

@@ -35,6 +35,8 @@ import os
 import subprocess
 import sys
 
+from checklist import Checklist  # tests/checks/checklist.py (next to this script)
+
 MU, LOW, HIGH = 0.3, 1990.0, 10250.0
 
 
@@ -55,12 +57,7 @@ def main():
     subprocess.run([sys.executable, os.path.join(source, "scripts", "prm_variant.py"), prm, ratio_prm,
                     "Contact/Strategy = load increment ratio", "Loading/Predictor = none"],
                    check=True)
-    failures = []
-
-    def check(label, ok):
-        print(f"{'ok  ' if ok else 'FAIL'} {label}")
-        if not ok:
-            failures.append(label)
+    check = Checklist()
 
     histories = {}
     for strategy, path in (("nested active set", prm), ("load increment ratio", ratio_prm)):
@@ -84,10 +81,7 @@ def main():
           len(common) == 16 and worst <= 0.05)
     check(f"strategies: mean |F| {mean_n:.0f} vs {mean_r:.0f} N/mm within 2 % "
           f"({(mean_n - mean_r) / mean_r:+.2%})", abs(mean_n - mean_r) <= 0.02 * mean_r)
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    return 0
+    return check.exit_status()
 
 
 def check_run(rows, check):

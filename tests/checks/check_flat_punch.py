@@ -18,6 +18,8 @@ import os
 import subprocess
 import sys
 
+from checklist import Checklist  # tests/checks/checklist.py (next to this script)
+
 
 def run(ausroll, source, name, overrides):
     subprocess.run([sys.executable, os.path.join(source, "prm", "flat_punch_mesh.py"),
@@ -40,12 +42,7 @@ def run(ausroll, source, name, overrides):
 def main():
     ausroll, source = sys.argv[1], sys.argv[2]
     p_lim = (2 + math.pi) * 200 / math.sqrt(3)
-    failures = []
-
-    def check(label, ok):
-        print(f"{'ok  ' if ok else 'FAIL'} {label}")
-        if not ok:
-            failures.append(label)
+    check = Checklist()
 
     fbar = run(ausroll, source, "q1_fbar", ["Model/Volumetric locking treatment = F-bar"])
     full = run(ausroll, source, "q1_full", ["Model/Volumetric locking treatment = none"])
@@ -60,8 +57,7 @@ def main():
           full[-1] > 1.08 * p_lim)
     check("Q1 full integration still rising at the end (no limit load)",
           full[-1] - full[-2] > 2e-3 * full[-1])
-    print("passed" if not failures else f"{len(failures)} check(s) failed")
-    return 1 if failures else 0
+    return check.exit_status()
 
 
 if __name__ == "__main__":

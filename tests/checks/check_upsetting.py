@@ -19,6 +19,8 @@ import os
 import subprocess
 import sys
 
+from checklist import Checklist  # tests/checks/checklist.py (next to this script)
+
 REFERENCE_FORCE_30 = 1682.0  # kN, Q2 16x12, 0.25 % steps
 REFERENCE_BULGE_30 = 24.629  # mm
 
@@ -39,12 +41,7 @@ def run(ausroll, source, name, overrides):
 
 def main():
     ausroll, source = sys.argv[1], sys.argv[2]
-    failures = []
-
-    def check(label, ok):
-        print(f"{'ok  ' if ok else 'FAIL'} {label}")
-        if not ok:
-            failures.append(label)
+    check = Checklist()
 
     half = run(ausroll, source, "step_050", ["Loading/Number of steps = 60"])
     one = run(ausroll, source, "step_100", ["Loading/Number of steps = 30"])
@@ -93,8 +90,7 @@ def main():
     cutbacks = sum(int(r["cutbacks"]) for r in half + one)
     check(f"at most one cutback (finite strain runs: {cutbacks}; the first 1 % step crosses "
           "the yield point)", cutbacks <= 1)
-    print("passed" if not failures else f"{len(failures)} check(s) failed")
-    return 1 if failures else 0
+    return check.exit_status()
 
 
 if __name__ == "__main__":
