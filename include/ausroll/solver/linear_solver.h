@@ -49,9 +49,8 @@ namespace ausroll::solver
      * The matrix is about to be (re)initialised with a new sparsity pattern (call before every
      * reinit of the matrix, i.e. after every mesh change, while the old matrix still exists: the
      * kept solver refers to it): the direct solver's symbolic factorisation is redone at the next
-     * solve. Between such calls
-     * the symbolic factorisation (ordering, elimination tree) is kept and only the numeric one is
-     * redone for new matrix values.
+     * solve. Between such calls the symbolic factorisation (ordering, elimination tree) is kept
+     * and only the numeric one is redone for new matrix values.
      */
     void matrix_pattern_changed();
 
