@@ -186,15 +186,20 @@ namespace ausroll::contact
             && n.projection.valid
             && n.projection.gap < (n.changes == 0 ? gap_tolerance : -gap_tolerance)
             && n.changes < parameters.max_status_changes)
-          switch_status(n,
-                        dies[n.die]->friction == FrictionLaw::frictionless ? ContactStatus::slip
-                                                                           : ContactStatus::stick);
+          switch_status(n, closing_status(n));
       }
       if (n.status != ContactStatus::open)
         ++closed;
     }
     build_row_transforms();
     return closed;
+  }
+
+  template <int dim>
+  ContactStatus ContactOperator<dim>::closing_status(const Node &n) const
+  {
+    return dies[n.die]->friction->sticks_when_closing() ? ContactStatus::stick
+                                                        : ContactStatus::slip;
   }
 
   template <int dim>
@@ -245,17 +250,24 @@ namespace ausroll::contact
   void ContactOperator<dim>::build_row_transforms()
   {
     transforms.clear();
+    // A slipping node's tangential equation becomes t.r + s T(n.r) = 0 (s the slip sign, T the
+    // slip limit of the friction law, affine near the current state: T = T(0) + T' R_n), i.e.
+    // rows <- (I + s T' t (x) n) rows + s T(0) t: Coulomb I + mu s t (x) n, Tresca an offset.
     for (const Node &n : nodes)
-      if (n.status == ContactStatus::slip && dies[n.die]->friction == FrictionLaw::coulomb
+      if (n.status == ContactStatus::slip && dies[n.die]->friction->switches_stick_slip()
           && n.sign != 0)
       {
         NodalRowTransform<dim> t;
         t.dofs = n.dofs;
-        const double mu = dies[n.die]->mu;
+        const SlipLimit limit = dies[n.die]->friction->slip_limit(n.Rn, n.area);
         for (unsigned int i = 0; i < dim; ++i)
+        {
           for (unsigned int j = 0; j < dim; ++j)
-            t.matrix[i][j] = (i == j ? 1. : 0.)
-                             + mu * n.sign * n.projection.tangent[i] * n.projection.normal[j];
+            t.matrix[i][j]
+                = (i == j ? 1. : 0.)
+                  + limit.slope * n.sign * n.projection.tangent[i] * n.projection.normal[j];
+          t.offset[i] = limit.intercept * n.sign * n.projection.tangent[i];
+        }
         transforms.emplace(n.dofs[0], t);
       }
   }
@@ -331,14 +343,14 @@ namespace ausroll::contact
     {
       if (n.status == ContactStatus::open || n.fresh || n.changes >= parameters.max_status_changes)
         continue;
-      const RigidDie &die = *dies[n.die];
-      ContactStatus   target = n.status;
+      const FrictionLaw &friction = *dies[n.die]->friction;
+      ContactStatus      target = n.status;
       if (n.Rn < -force_tolerance)
         target = ContactStatus::open;
-      else if (n.status == ContactStatus::stick && die.friction == FrictionLaw::coulomb
-               && std::abs(n.Rt) > die.mu * n.Rn + force_tolerance)
+      else if (n.status == ContactStatus::stick
+               && friction.respond(n.Rn, n.Rt, n.area, force_tolerance).slip)
         target = ContactStatus::slip;
-      else if (n.status == ContactStatus::slip && die.friction == FrictionLaw::coulomb
+      else if (n.status == ContactStatus::slip && friction.switches_stick_slip()
                && n.sign * die_coordinate_difference(n.die, n.projection.s, n.s_ref)
                       < -gap_tolerance)
         target = ContactStatus::stick;
@@ -366,8 +378,7 @@ namespace ausroll::contact
       if (!n.projection.valid)
         return event;
       const double g1 = n.projection.gap;
-      event.target = dies[n.die]->friction == FrictionLaw::frictionless ? ContactStatus::slip
-                                                                        : ContactStatus::stick;
+      event.target = closing_status(n);
       if (n.c_gap_valid && n.c_die == n.die && n.c_gap >= 0. && g1 < n.c_gap)
         event.alpha = n.c_gap / (n.c_gap - g1); // open -> closed: the gap closes
       else if (g1 < -gap_tolerance)
@@ -375,21 +386,26 @@ namespace ausroll::contact
       return event;
     }
 
-    const RigidDie &die = *dies[n.die];
-    const double    dRn = n.Rn - n.c_Rn;
+    const FrictionLaw &friction = *dies[n.die]->friction;
+    const double       dRn = n.Rn - n.c_Rn;
     // closed -> open: the normal force becomes tensile
     if (dRn < 0. && n.c_Rn >= 0.)
       event = Event{n.c_Rn / -dRn, ContactStatus::open};
     else if (n.Rn < -force_tolerance)
       event = Event{0., ContactStatus::open};
-    if (die.friction != FrictionLaw::coulomb)
+    if (!friction.switches_stick_slip())
       return event;
     if (n.status == ContactStatus::stick)
     {
-      // stick -> slip: s R_t reaches mu R_n (s = sign of the final tangential force)
-      const double s = n.Rt >= 0. ? 1. : -1.;
-      const double f0 = s * n.c_Rt - die.mu * n.c_Rn;
-      const double df = s * (n.Rt - n.c_Rt) - die.mu * dRn;
+      // stick -> slip: s R_t reaches the slip limit T(R_n) (s = sign of the final tangential
+      // force); f = s R_t - T(R_n) is linear in the step on one affine piece of T, else secant
+      const double    s = n.Rt >= 0. ? 1. : -1.;
+      const SlipLimit l0 = friction.slip_limit(n.c_Rn, n.area);
+      const SlipLimit l1 = friction.slip_limit(n.Rn, n.area);
+      const double    dT = l0.slope == l1.slope ? (l1.intercept - l0.intercept) + l1.slope * dRn
+                                                : l1.value(n.Rn) - l0.value(n.c_Rn);
+      const double    f0 = s * n.c_Rt - l0.value(n.c_Rn);
+      const double    df = s * (n.Rt - n.c_Rt) - dT;
       if (df > 0.)
       {
         const double alpha = f0 >= 0. ? 0. : -f0 / df;
@@ -453,9 +469,7 @@ namespace ausroll::contact
     for (Node &n : nodes)
       if (n.status == ContactStatus::open && n.projection.valid && n.projection.gap < gap_tolerance)
       {
-        switch_status(n,
-                      dies[n.die]->friction == FrictionLaw::frictionless ? ContactStatus::slip
-                                                                         : ContactStatus::stick);
+        switch_status(n, closing_status(n));
         if (n.owned)
           ++closed;
       }
@@ -563,8 +577,12 @@ namespace ausroll::contact
     // friction law when slipping (so that a symmetry condition on the same node does not count).
     double tangential = n.Rt;
     if (n.status == ContactStatus::slip)
-      tangential
-          = dies[n.die]->friction == FrictionLaw::coulomb ? -dies[n.die]->mu * n.sign * n.Rn : 0.;
+    {
+      const FrictionLaw &friction = *dies[n.die]->friction;
+      tangential = friction.switches_stick_slip()
+                       ? -n.sign * friction.slip_limit(n.Rn, n.area).value(n.Rn)
+                       : 0.;
+    }
     Tensor<1, dim> f;
     for (unsigned int d = 0; d < dim; ++d)
       f[d] = n.Rn * n.projection.normal[d] + tangential * n.projection.tangent[d];

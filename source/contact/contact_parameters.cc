@@ -51,10 +51,20 @@ namespace ausroll::contact
       prm.declare_entry(
           "Friction",
           "Coulomb",
-          Patterns::Selection("frictionless|Coulomb|sticking"),
-          "Friction law: frictionless, Coulomb (Friction coefficient) or sticking (no slip).");
-      prm.declare_entry(
-          "Friction coefficient", "0", Patterns::Double(0.), "Coulomb coefficient mu.");
+          Patterns::Selection("frictionless|Coulomb|sticking|Tresca|Coulomb capped by shear"),
+          "Friction law: frictionless; Coulomb, |t_t| <= mu p (Friction coefficient); sticking "
+          "(no slip); Tresca (constant shear), |t_t| <= m k (Friction factor); Coulomb capped by "
+          "shear, |t_t| <= min(mu p, m k). k = sigma_0 / sqrt(3) from the workpiece's initial "
+          "yield stress Material/Yield stress.");
+      prm.declare_entry("Friction coefficient",
+                        "0",
+                        Patterns::Double(0.),
+                        "Coulomb coefficient mu (Coulomb, Coulomb capped by shear).");
+      prm.declare_entry("Friction factor",
+                        "0",
+                        Patterns::Double(0., 1.),
+                        "Friction factor m of the shear laws (Tresca, Coulomb capped by shear): "
+                        "tau = m k, 0 frictionless, 1 the full shear yield stress k.");
       prm.declare_entry(
           "Candidate boundaries",
           "",
@@ -230,12 +240,19 @@ namespace ausroll::contact
                 : shape == "arc line" ? DieShape::arc_line
                                       : DieShape::involute_gear;
       const std::string friction = prm.get("Friction");
-      d.friction = friction == "frictionless" ? FrictionLaw::frictionless
-                   : friction == "Coulomb"    ? FrictionLaw::coulomb
-                                              : FrictionLaw::sticking;
+      d.friction = friction == "frictionless" ? FrictionLawType::frictionless
+                   : friction == "Coulomb"    ? FrictionLawType::coulomb
+                   : friction == "sticking"   ? FrictionLawType::sticking
+                   : friction == "Tresca"     ? FrictionLawType::tresca
+                                              : FrictionLawType::coulomb_capped_by_shear;
       d.friction_coefficient = prm.get_double("Friction coefficient");
-      if (d.friction == FrictionLaw::coulomb && d.friction_coefficient == 0.)
-        d.friction = FrictionLaw::frictionless;
+      d.friction_factor = prm.get_double("Friction factor");
+      // A law whose limit is zero is frictionless (closed nodes slip at once).
+      if ((d.friction == FrictionLawType::coulomb && d.friction_coefficient == 0.)
+          || (d.friction == FrictionLawType::tresca && d.friction_factor == 0.)
+          || (d.friction == FrictionLawType::coulomb_capped_by_shear
+              && (d.friction_coefficient == 0. || d.friction_factor == 0.)))
+        d.friction = FrictionLawType::frictionless;
       d.candidate_boundaries
           = parse_unsigned_list(prm.get("Candidate boundaries"), path + "Candidate boundaries");
       d.search_distance = prm.get_double("Search distance");
@@ -306,5 +323,21 @@ namespace ausroll::contact
       dies.push_back(d);
     }
     prm.leave_subsection();
+  }
+
+  void ContactParameters::set_workpiece_yield_stress(const double sigma_0)
+  {
+    for (unsigned int k = 0; k < dies.size(); ++k)
+    {
+      DieParameters &d = dies[k];
+      if (d.friction != FrictionLawType::tresca
+          && d.friction != FrictionLawType::coulomb_capped_by_shear)
+        continue;
+      require(sigma_0 > 0.,
+              "Contact/Die " + std::to_string(k) + "/Friction",
+              "the shear friction laws need the shear yield stress k = sigma_0 / sqrt(3) of a "
+              "plastic workpiece: set Material/Yield criterion = von Mises");
+      d.shear_yield_stress = sigma_0 / std::sqrt(3.);
+    }
   }
 } // namespace ausroll::contact

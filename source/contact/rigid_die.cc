@@ -172,8 +172,7 @@ namespace ausroll::contact
 
   RigidDie::RigidDie(const DieParameters &p, const unsigned int index)
       : name(p.name)
-      , friction(p.friction)
-      , mu(p.friction == FrictionLaw::coulomb ? p.friction_coefficient : 0.)
+      , friction(create_friction_law(p))
       , search_distance(p.search_distance > 0. ? p.search_distance
                                                : std::numeric_limits<double>::infinity())
       , candidates(p.candidate_boundaries.begin(), p.candidate_boundaries.end())

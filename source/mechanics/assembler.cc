@@ -494,6 +494,31 @@ namespace ausroll::mechanics
       }
     }
 
+    // Constant parts of the row transforms (shear friction), once per node by its owner.
+    if (row_transforms != nullptr && (targets.free_residual != nullptr || need_matrix))
+    {
+      const IndexSet                      &owned = dof_handler.locally_owned_dofs();
+      Vector<double>                       node_offset(dim);
+      std::vector<types::global_dof_index> node_dofs_global(dim);
+      for (const auto &[key, transform] : *row_transforms)
+      {
+        if (transform.offset.norm_square() == 0. || !owned.is_element(key))
+          continue;
+        for (unsigned int c = 0; c < dim; ++c)
+        {
+          node_offset(c) = transform.offset[c];
+          node_dofs_global[c] = transform.dofs[c];
+        }
+        if (targets.free_residual != nullptr)
+          newton.distribute_local_to_global(node_offset, node_dofs_global, *targets.free_residual);
+        if (need_matrix)
+        {
+          node_offset *= -1.;
+          newton.distribute_local_to_global(node_offset, node_dofs_global, *targets.rhs);
+        }
+      }
+    }
+
     targets.residual->compress(VectorOperation::add);
     targets.external_force->compress(VectorOperation::add);
     if (targets.free_residual != nullptr)

@@ -30,7 +30,7 @@ namespace ausroll::contact
   {
     open = 0,  ///< no constraint
     stick = 1, ///< both displacement components follow the die point where the node stuck
-    slip = 2   ///< normal gap zero, tangential force mu p_n opposing the slip
+    slip = 2   ///< normal gap zero, tangential force of the friction law opposing the slip
   };
 
   /**
@@ -42,14 +42,15 @@ namespace ausroll::contact
    * inhomogeneous constraints on the Newton increment:
    *  - stick: delta u = x_die(P, t) - x, P being the die point (die coordinates) where the node
    * stuck;
-   *  - slip:  n . delta u = -gap, with the Coulomb force mu p_n opposing the slip added to the
-   *    tangential equation through a NodalRowTransform (consistent linearisation).
+   *  - slip:  n . delta u = -gap, with the friction force T(R_n) of the die's FrictionLaw
+   *    (Coulomb mu R_n, Tresca m k A, ...) opposing the slip added to the tangential equation
+   *    through a NodalRowTransform (consistent linearisation).
    * The contact force on a node is its entry of the residual f_int - f_ext (the equilibrium
    * equations of constrained DoFs are not solved, their residual is the reaction); R_n = n.R >= 0
    * in compression, R_t = t.R.
    *
    * Status changes follow `Contact/Strategy`: active set (inside Newton: penetration closes a node,
-   * tension R_n < 0 opens it, |R_t| > mu R_n makes it slip, slip reversal makes it stick) or the
+   * tension R_n < 0 opens it, |R_t| > T(R_n) makes it slip, slip reversal makes it stick) or the
    * load-increment ratio (statuses fixed during a sub-step; the step is scaled to the first status
    * change, NOFEAP Appendix A).
    *
@@ -279,6 +280,9 @@ namespace ausroll::contact
     /** Force of the die on node @p n: normal part from the residual, tangential part from the
         residual (stick) or the friction law (slip). */
     dealii::Tensor<1, dim> contact_force(const Node &n) const;
+
+    /** Status of node @p n when it closes on its die (slip if frictionless, else stick). */
+    ContactStatus closing_status(const Node &n) const;
 
     /** Switch node @p n to @p status at the current iterate. */
     void switch_status(Node &n, const ContactStatus status);

@@ -22,12 +22,14 @@ namespace ausroll::contact
                          ///< (NOFEAP)
   };
 
-  /** Friction law of a die (`Friction`). */
-  enum class FrictionLaw
+  /** Friction law of a die (`Friction`); the laws themselves are in friction_law.h. */
+  enum class FrictionLawType
   {
-    frictionless, ///< no tangential force: closed nodes slip freely
-    coulomb,      ///< |t_t| <= mu p_n
-    sticking      ///< no slip (mu = infinity): closed nodes stick
+    frictionless,           ///< no tangential force: closed nodes slip freely
+    coulomb,                ///< |t_t| <= mu p_n
+    sticking,               ///< no slip (mu = infinity): closed nodes stick
+    tresca,                 ///< constant shear |t_t| <= m k
+    coulomb_capped_by_shear ///< |t_t| <= min(mu p_n, m k)
   };
 
   /** Shape of a die (`Shape`). */
@@ -51,10 +53,14 @@ namespace ausroll::contact
   /** One `Contact/Die N` subsection. */
   struct DieParameters
   {
-    std::string               name = "die";           ///< `Name` (history columns die_<name>_...)
-    DieShape                  shape = DieShape::flat; ///< `Shape`
-    FrictionLaw               friction = FrictionLaw::coulomb; ///< `Friction`
-    double                    friction_coefficient = 0.; ///< `Friction coefficient` mu (Coulomb)
+    std::string     name = "die";           ///< `Name` (history columns die_<name>_...)
+    DieShape        shape = DieShape::flat; ///< `Shape`
+    FrictionLawType friction = FrictionLawType::coulomb; ///< `Friction`
+    double friction_coefficient = 0.; ///< `Friction coefficient` mu (Coulomb, capped Coulomb)
+    double friction_factor = 0.;      ///< `Friction factor` m (Tresca, capped Coulomb)
+    /** Shear yield stress k = sigma_0 / sqrt(3) of the workpiece (initial yield stress
+        `Material/Yield stress`), set by ContactParameters::set_workpiece_yield_stress(). */
+    double                    shear_yield_stress = 0.;
     std::vector<unsigned int> candidate_boundaries; ///< `Candidate boundaries` of the workpiece
     double                    search_distance = 0.; ///< `Search distance` (0: unlimited)
 
@@ -110,5 +116,13 @@ namespace ausroll::contact
     static void declare_parameters(dealii::ParameterHandler &prm);
     /** Read subsection `Contact`. Files are resolved relative to @p input_directory. */
     void parse_parameters(dealii::ParameterHandler &prm, const std::string &input_directory);
+
+    /**
+     * The workpiece's initial uniaxial yield stress sigma_0 (`Material/Yield stress`; 0 for an
+     * elastic workpiece) gives k = sigma_0 / sqrt(3) of the shear friction laws (Tresca, Coulomb
+     * capped by shear). Call after parse_parameters(); throws InputError naming the die's
+     * `Friction` if such a law meets an elastic workpiece.
+     */
+    void set_workpiece_yield_stress(const double sigma_0);
   };
 } // namespace ausroll::contact

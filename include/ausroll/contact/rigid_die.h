@@ -7,6 +7,7 @@
 #include <ausroll/contact/contact_parameters.h>
 #include <ausroll/contact/die_motion.h>
 #include <ausroll/contact/die_surface.h>
+#include <ausroll/contact/friction_law.h>
 
 #include <memory>
 #include <set>
@@ -61,10 +62,9 @@ namespace ausroll::contact
       return candidates.empty() || candidates.count(id) > 0;
     }
 
-    const std::string name;            ///< `Name`
-    const FrictionLaw friction;        ///< `Friction`
-    const double      mu;              ///< `Friction coefficient`
-    const double      search_distance; ///< `Search distance` (infinite if 0)
+    const std::string                        name;            ///< `Name`
+    const std::unique_ptr<const FrictionLaw> friction;        ///< `Friction` and its parameters
+    const double                             search_distance; ///< `Search distance` (infinite if 0)
 
   private:
     std::unique_ptr<DieSurface> surface;
