@@ -5,7 +5,7 @@
  */
 #pragma once
 
-#include <ausroll/mechanics/assembler.h>
+#include <ausroll/mechanics/material_point_storage.h>
 #include <ausroll/mechanics/quadrature_interpolation.h>
 
 #include <deal.II/base/quadrature.h>

@@ -5,7 +5,7 @@
 #pragma once
 
 #include <ausroll/adaptivity/adaptivity_parameters.h>
-#include <ausroll/mechanics/assembler.h>
+#include <ausroll/mechanics/material_point_storage.h>
 
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>

@@ -6,12 +6,11 @@
 
 #include <ausroll/contact/nodal_row_transform.h>
 #include <ausroll/material/constitutive_model.h>
-#include <ausroll/material/material_point.h>
 #include <ausroll/mechanics/boundary_conditions.h>
+#include <ausroll/mechanics/material_point_storage.h>
 #include <ausroll/mechanics/planar_kinematics.h>
 
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/base/quadrature_point_data.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping.h>
@@ -24,12 +23,6 @@
 
 namespace ausroll::mechanics
 {
-  /** Storage of the material points of the locally owned cells. */
-  template <int dim>
-  using MaterialPointStorage
-      = dealii::CellDataStorage<typename dealii::Triangulation<dim>::cell_iterator,
-                                material::MaterialPoint>;
-
   using contact::NodalRowTransform;
   using contact::RowTransforms;
 
