@@ -5,6 +5,7 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/io/parameter_documentation.h>
 #include <ausroll/scene/scene.h>
+#include <ausroll/scene/scene_parameters.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -63,7 +64,11 @@ int main(int argc, char **argv)
     {
       const std::string format = arg.size() > 19 && arg[18] == '=' ? arg.substr(19) : "prm";
       if (root)
-        ausroll::io::print_parameters(std::cout, format);
+      {
+        dealii::ParameterHandler prm;
+        ausroll::scene::SceneParameters::declare_parameters(prm);
+        ausroll::io::print_parameters(std::cout, format, prm);
+      }
       return 0;
     }
     if (arg.rfind("-", 0) == 0)

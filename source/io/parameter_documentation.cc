@@ -1,6 +1,5 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/io/parameter_documentation.h>
-#include <ausroll/scene/scene_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -71,10 +70,10 @@ namespace ausroll::io
     }
   } // namespace
 
-  void print_parameters(std::ostream &out, const std::string &format)
+  void print_parameters(std::ostream                   &out,
+                        const std::string              &format,
+                        const dealii::ParameterHandler &prm)
   {
-    dealii::ParameterHandler prm;
-    scene::SceneParameters::declare_parameters(prm);
     if (format == "prm")
     {
       prm.print_parameters(out, dealii::ParameterHandler::OutputStyle::PRM);
