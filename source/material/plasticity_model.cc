@@ -26,6 +26,17 @@ namespace ausroll::material
     return result;
   }
 
+  SymmetricTensor<4, 3> NoPlasticity::back_stress_sensitivity(const ReturnMappingResult &) const
+  {
+    return SymmetricTensor<4, 3>(); // the elastic return does not see the back stress
+  }
+
+  SymmetricTensor<4, 3>
+  VonMisesPlasticity::back_stress_sensitivity(const ReturnMappingResult &result) const
+  {
+    return (stiffness - result.tangent) / (2. * elastic.shear_modulus);
+  }
+
   VonMisesPlasticity::VonMisesPlasticity(const MaterialParameters &parameters)
       : PlasticityModel(parameters)
       , hardening(parameters)

@@ -35,6 +35,22 @@ namespace ausroll::material
    * Elastic-plastic stress update in stress space. The trial stress is sigma_trial = C :
    * eps_e_trial; the result's tangent is d sigma / d eps_e_trial (consistent with the discrete
    * update).
+   *
+   * The seam for a yield criterion (`Material/Yield criterion`): a new criterion derives from this
+   * class and provides
+   *  - return_map(): admissible stress, plastic strain increment, updated back stress, Delta alpha
+   *    and the consistent tangent d sigma / d eps_e_trial;
+   *  - yield_function() (negative inside the elastic domain; used for `yield_excess` and checks);
+   *  - project_onto_yield_surface() (after a mesh transfer; the default does not project, which
+   *    is right only for an elastic model);
+   *  - back_stress_sensitivity(): d sigma / d back_stress_old, which the finite-strain models need
+   *    because they rotate the back stress before the return. It is pure virtual: the J2 shortcut
+   *    (C - D) / (2 mu) holds only for returns that see the trial state through
+   *    dev(sigma_trial) - back_stress_old with a deviatoric correction, so every criterion states
+   *    its own (e.g. by differentiating its return map with respect to the back stress).
+   * The kinematics (SmallStrainModel, TotalLagrangianModel, UpdatedLagrangianJaumannModel,
+   * FiniteStrainLogModel) and the PlaneStressDriver use nothing else, and
+   * create_plasticity_model() is the one factory line to add.
    */
   class PlasticityModel
   {
@@ -72,17 +88,13 @@ namespace ausroll::material
                                   const double                         alpha) const = 0;
 
     /**
-     * Sensitivity of the returned stress to the trial back stress, d stress / d back_stress_old,
-     * for a deviatoric perturbation of the back stress, from the algorithmic tangent D of @p
-     * result: (C - D) / (2 mu). Valid for return maps whose correction depends on the trial state
-     * only through dev(trial_stress) - back_stress_old and is deviatoric (NoPlasticity,
-     * VonMisesPlasticity). The finite-strain models need it because they rotate the back stress
-     * with the deformation before the return.
+     * Sensitivity of the returned stress to the back stress at the start of the step,
+     * d stress / d back_stress_old (for a deviatoric perturbation of the back stress), at the
+     * return @p result of return_map(). The finite-strain models need it because they rotate the
+     * back stress with the deformation before the return; only their tangent uses it.
      */
-    dealii::SymmetricTensor<4, 3> back_stress_sensitivity(const ReturnMappingResult &result) const
-    {
-      return (stiffness - result.tangent) / (2. * elastic.shear_modulus);
-    }
+    virtual dealii::SymmetricTensor<4, 3>
+    back_stress_sensitivity(const ReturnMappingResult &result) const = 0;
 
     /** The elastic law. */
     const IsotropicElasticity &elasticity() const { return elastic; }
@@ -110,6 +122,10 @@ namespace ausroll::material
     {
       return -1.;
     }
+
+    /** Zero: the elastic return does not see the back stress. */
+    dealii::SymmetricTensor<4, 3>
+    back_stress_sensitivity(const ReturnMappingResult &result) const override;
   };
 
   /**
@@ -138,6 +154,15 @@ namespace ausroll::material
     project_onto_yield_surface(const dealii::SymmetricTensor<2, 3> &stress,
                                const dealii::SymmetricTensor<2, 3> &back_stress,
                                const double                         alpha) const override;
+
+    /**
+     * (C - D) / (2 mu) from the algorithmic tangent D of @p result: the radial return depends on
+     * the trial state only through eta = dev(sigma_trial) - beta_old and its correction is
+     * deviatoric, so a deviatoric change of beta_old acts as minus the same change of
+     * dev(sigma_trial) = 2 mu dev(eps_e_trial).
+     */
+    dealii::SymmetricTensor<4, 3>
+    back_stress_sensitivity(const ReturnMappingResult &result) const override;
 
   private:
     HardeningLaw hardening;         ///< isotropic hardening sigma_y(alpha)
