@@ -88,6 +88,50 @@ ausroll_add_check(NAME contact_block_slide_nested
   PRM ${CMAKE_CURRENT_BINARY_DIR}/block_slide_nested.prm
   CHECK ${AUSROLL_CHECKS_DIR}/check_history.py ARGS out/history.csv ${_slide_asserts})
 
+# The same slide under each friction law (block yield stress 1000 MPa: k = 577.35 MPa, elastic).
+# check_friction_law.py: at t = 2 every slipping node carries |t_t| = tau_lim = min(mu p_n, m k)
+# of its law and every sticking node less (1e-8: the contact CSV's 10 digits); after lift-off
+# (t = 3) forces and node counts are zero: no friction left behind.
+set(_release --value die_punch_force_x 3 0 1e-9 --value die_punch_force_y 3 0 1e-9
+    --value die_punch_stick_nodes 3 0 0 --value die_punch_slip_nodes 3 0 0)
+function(_block_slide_law NAME FRICTION MU M STRATEGY)
+  set(BLOCK_FRICTION ${FRICTION})
+  set(BLOCK_MU ${MU})
+  set(BLOCK_M ${M})
+  set(BLOCK_STRATEGY ${STRATEGY})
+  configure_file(${AUSROLL_CHECKS_DIR}/scenes/block_slide_friction.prm.in
+                 ${CMAKE_CURRENT_BINARY_DIR}/block_slide_${NAME}.prm @ONLY)
+  ausroll_add_check(NAME contact_block_slide_${NAME}
+    PRM ${CMAKE_CURRENT_BINARY_DIR}/block_slide_${NAME}.prm
+    CHECK ${AUSROLL_CHECKS_DIR}/check_friction_law.py ARGS ${ARGN})
+endfunction()
+# Tresca, tau = m k = 57.735 MPa: with the load-increment ratio the full slide carries exactly
+# F_x = m k x 10 mm = 577.3502692 N (1e-9). (With the active set the node at the leading corner
+# opens in a Newton iterate, re-closes and slips against the step's relative motion: every node
+# still carries m k, checked below, but one corner's force points back, F_x = 23/24 of it.)
+_block_slide_law(tresca_ratio Tresca 0 0.1 "load increment ratio"
+  out 2 --friction-factor 0.1 --yield-stress 1000 --slip-nodes 17 --total-force
+  -- --value die_punch_force_x 2 577.3502692 1e-9 ${_release})
+_block_slide_law(tresca Tresca 0 0.1 "active set"
+  out 2 --friction-factor 0.1 --yield-stress 1000 --slip-nodes 17 -- ${_release})
+# Coulomb capped by shear, mu = 0.2, m k = 90.07 MPa: the cap lies inside the pressure range
+# (p_n 113 ... 800 MPa), so 4 nodes slip at mu p_n and 13 at m k; the total is their sum.
+_block_slide_law(capped "Coulomb capped by shear" 0.2 0.156 "active set"
+  out 2 --mu 0.2 --friction-factor 0.156 --yield-stress 1000 --slip-nodes 17 --both-branches
+  --total-force -- ${_release})
+# Coulomb capped by shear with the cap above mu p_n everywhere (m = 1): plain Coulomb, F_x / F_y
+# = -mu exactly.
+_block_slide_law(capped_coulomb "Coulomb capped by shear" 0.2 1 "active set"
+  out 2 --mu 0.2 --friction-factor 1 --yield-stress 1000 --slip-nodes 17 --total-force
+  -- --ratio die_punch_force_x die_punch_force_y 2 -0.2 1e-9 ${_release})
+# Sticking: no node ever slips; frictionless: no tangential force, every closed node slips.
+_block_slide_law(sticking sticking 0 0 "active set"
+  out 1 --slip-nodes 0 -- --value die_punch_stick_nodes 1 17 0 --value die_punch_slip_nodes 2 0 0
+  ${_release})
+_block_slide_law(frictionless frictionless 0 0 "active set"
+  out 2 --slip-nodes 17 -- --value die_punch_force_x 1 0 1e-9 --value die_punch_force_x 2 0 1e-9
+  --value die_punch_stick_nodes 2 0 0 ${_release})
+
 # Hertz: contact half-width a and peak pressure p0 within 1 % of plane-strain Hertz theory at the
 # thesis loads P = 1779.2 ... 8896 N/mm (and the load-increment-ratio sub-steps in between), from a
 # fit of the nodal pressures to the ellipse; the scene's mesh gives 0.4 % / 0.02 %. Below 1779 N/mm
