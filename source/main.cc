@@ -9,7 +9,9 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 
+#include <algorithm>
 #include <iostream>
 #include <string>
 
@@ -32,8 +34,14 @@ namespace
 
 int main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
   const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  // Threads of the assembly (WorkStream): DEAL_II_NUM_THREADS if set, else the cores shared
+  // among the ranks (one thread per rank when ranks fill the cores).
+  dealii::MultithreadInfo::set_thread_limit(
+      std::max(1u,
+               dealii::MultithreadInfo::n_cores()
+                   / dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)));
 
   // Keep deal.II from printing long developer messages; errors are reported below.
   dealii::deal_II_exceptions::disable_abort_on_exception();

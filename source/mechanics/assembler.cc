@@ -2,10 +2,13 @@
 #include <ausroll/mechanics/assembler.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <mutex>
 #include <sstream>
 
 namespace ausroll::mechanics
@@ -31,6 +34,596 @@ namespace ausroll::mechanics
   {
   }
 
+  namespace
+  {
+    /**
+     * d ln J / du_i = tr(F^-1 G_i) of a shape function of component @p c with in-plane gradient
+     * @p grad and hoop entry @p hoop (small strain: tr G_i = grad[c] + hoop).
+     */
+    template <int dim, typename Gradient>
+    double volume_change_rate(const bool          small_strain,
+                              const Tensor<2, 3> &F_inv,
+                              const unsigned int  c,
+                              const Gradient     &grad,
+                              const double        hoop)
+    {
+      if (small_strain)
+        return grad[c] + hoop;
+      double l = F_inv[2][2] * hoop;
+      for (unsigned int J = 0; J < dim; ++J)
+        l += F_inv[J][c] * grad[J];
+      return l;
+    }
+  } // namespace
+
+  template <int dim>
+  struct Assembler<dim>::Setup
+  {
+    // inputs of the call
+    const TrilinosWrappers::MPI::Vector *solution = nullptr;
+    double                               time = 0.;
+    MaterialPointStorage<dim>           *material_points = nullptr;
+    const AffineConstraints<double>     *hanging = nullptr;
+    const AffineConstraints<double>     *newton = nullptr;
+    const RowTransforms<dim>            *row_transforms = nullptr;
+    const AssemblyTargets               *targets = nullptr;
+
+    // flags
+    bool need_matrix = false;
+    bool small_strain = false;
+    bool f_bar = false;
+    // J0: value at the cell centre for Q1 (de Souza Neto), cell average for higher degrees (a
+    // single centre value leaves volumetric modes of Q2 unconstrained: too soft)
+    bool cell_average = false;
+    bool follower = false; // pressure on the deformed surface
+    bool axisymmetric = false;
+    bool check_inversion = false;
+
+    unsigned int n_dofs = 0, n_q = 0, n_face_q = 0, n_base = 0;
+    // Component of each shape function and the local DoFs of each support point.
+    std::vector<unsigned int>            component;
+    std::vector<std::array<unsigned, 3>> node_dofs;
+    // n of the F-bar scaling and the in-plane/volumetric projection E (I_n)
+    unsigned int n_vol = 2;
+    double       alpha = 0.5;
+    Tensor<2, 3> E;
+
+    // outcome, gathered by the copier in cell order
+    bool        ok = true;
+    double      min_jacobian = 1e300;
+    std::string message;
+    // the boundary-condition functions keep their time in the object: one thread at a time
+    mutable std::mutex load_mutex;
+  };
+
+  template <int dim>
+  struct Assembler<dim>::ScratchData
+  {
+    ScratchData(const Mapping<dim>        &mapping,
+                const FiniteElement<dim>  &fe,
+                const Quadrature<dim>     &cell_quadrature,
+                const Quadrature<dim - 1> &face_quadrature)
+        : fe_values(mapping,
+                    fe,
+                    cell_quadrature,
+                    update_values | update_gradients | update_quadrature_points | update_JxW_values)
+        , fe_face_values(mapping,
+                         fe,
+                         face_quadrature,
+                         update_values | update_gradients | update_quadrature_points
+                             | update_normal_vectors | update_JxW_values)
+        , fe_center(mapping,
+                    fe,
+                    Quadrature<dim>(cell_center()),
+                    update_values | update_gradients | update_quadrature_points)
+        , grad_u(cell_quadrature.size())
+        , grad_u_face(face_quadrature.size())
+        , grad_u_center(1)
+        , u_values(cell_quadrature.size())
+        , u_face(face_quadrature.size())
+        , u_center(1)
+        , g(fe.n_dofs_per_cell())
+        , hoop(fe.n_dofs_per_cell(), 0.)
+        , h(fe.n_dofs_per_cell())
+        , h_hoop(fe.n_dofs_per_cell(), 0.)
+        , dlnJ0(fe.n_dofs_per_cell())
+        , dlnJ(fe.n_dofs_per_cell())
+        , q_coefficient(fe.n_dofs_per_cell())
+    {
+    }
+
+    ScratchData(const ScratchData &other)
+        : ScratchData(other.fe_values.get_mapping(),
+                      other.fe_values.get_fe(),
+                      other.fe_values.get_quadrature(),
+                      other.fe_face_values.get_quadrature())
+    {
+    }
+
+    static Point<dim> cell_center()
+    {
+      Point<dim> unit_center;
+      for (unsigned int d = 0; d < dim; ++d)
+        unit_center[d] = 0.5;
+      return unit_center;
+    }
+
+    FEValues<dim>     fe_values;
+    FEFaceValues<dim> fe_face_values;
+    FEValues<dim>     fe_center; // F-bar: values and gradients at the cell centre
+
+    std::vector<Tensor<2, dim>> grad_u, grad_u_face, grad_u_center;
+    std::vector<Tensor<1, dim>> u_values, u_face, u_center;
+
+    // The 3D gradient G_i = dF/du_i of each shape function (3x3): row c_i holds the in-plane
+    // gradient, g[i][J] = dF[c_i][J] / du_i (J < dim), and axisymmetric models add the hoop entry
+    // hoop[i] = dF[2][2] / du_i = phi_i / R for the radial component (c_i = 0).
+    std::vector<std::array<double, dim>> g;
+    std::vector<double>                  hoop;
+    // h[j][c][I] = (A : G_j)[c][I] for c, I < dim and h_hoop[j] = (A : G_j)[2][2]
+    std::vector<std::array<std::array<double, dim>, dim>> h;
+    std::vector<double>                                   h_hoop;
+    // F-bar: d ln J0 / du_j at the centre, d ln J / du_j at the point (tr G for small strain), and
+    // the coefficients q_i of the rank-one cell-centre term of the tangent
+    std::vector<double> dlnJ0, dlnJ, q_coefficient;
+    // F-bar reference of the current cell: J0, tr(F0 - I)
+    double J0 = 1., trace_H0 = 0.;
+
+    Tensor<2, 3> P, P_bar;
+    Tensor<4, 3> A;
+  };
+
+  template <int dim>
+  struct Assembler<dim>::CopyData
+  {
+    explicit CopyData(const unsigned int n_dofs)
+        : cell_matrix(n_dofs, n_dofs)
+        , cell_residual(n_dofs)
+        , cell_external(n_dofs)
+        , cell_free(n_dofs)
+        , cell_rhs(n_dofs)
+        , dofs(n_dofs)
+    {
+    }
+
+    FullMatrix<double>                   cell_matrix;
+    Vector<double>                       cell_residual, cell_external, cell_free, cell_rhs;
+    std::vector<types::global_dof_index> dofs;
+    bool                                 ok = true;
+    double                               min_jacobian = 1e300;
+    std::string                          message;
+
+    void fail(const std::string &text)
+    {
+      ok = false;
+      message = text;
+    }
+  };
+
+  template <int dim>
+  bool Assembler<dim>::f_bar_reference(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                       const Setup                                          &setup,
+                                       ScratchData &scratch,
+                                       CopyData    &copy) const
+  {
+    const FEValuesExtractors::Vector displacement(0);
+    const std::vector<unsigned int> &component = setup.component;
+    const bool                       small_strain = setup.small_strain;
+    const bool                       axisymmetric = setup.axisymmetric;
+    std::vector<double>             &dlnJ0 = scratch.dlnJ0;
+    double                          &J0 = scratch.J0;
+    double                          &trace_H0 = scratch.trace_H0;
+    J0 = 1.;
+    trace_H0 = 0.;
+    if (!setup.cell_average)
+    {
+      // Q1: the deformation gradient at the cell centre
+      FEValues<dim> &fe_center = scratch.fe_center;
+      fe_center.reinit(cell);
+      fe_center[displacement].get_function_gradients(*setup.solution, scratch.grad_u_center);
+      fe_center[displacement].get_function_values(*setup.solution, scratch.u_center);
+      const Point<dim>  &X0 = fe_center.quadrature_point(0);
+      const Tensor<2, 3> F0
+          = kinematics.deformation_gradient(scratch.grad_u_center[0], scratch.u_center[0], X0);
+      J0 = determinant(F0);
+      trace_H0 = trace(F0) - 3.;
+      if (setup.check_inversion && !(J0 > 0.))
+      {
+        std::ostringstream msg;
+        msg << "inverted element (det F = " << J0 << " at the cell centre " << X0 << ")";
+        copy.fail(msg.str());
+        return false;
+      }
+      Tensor<2, 3> F0_inv;
+      if (!small_strain)
+        F0_inv = invert(F0);
+      for (unsigned int j = 0; j < setup.n_dofs; ++j)
+      {
+        // tr G0_j (small strain) or tr(F0^-1 G0_j) = d ln J0 / du_j
+        const unsigned int   c = component[j];
+        const Tensor<1, dim> grad = fe_center.shape_grad_component(j, 0, c);
+        const double         hoop0
+            = (axisymmetric && c == 0) ? fe_center.shape_value_component(j, 0, c) / X0[0] : 0.;
+        dlnJ0[j] = volume_change_rate<dim>(small_strain, F0_inv, c, grad, hoop0);
+      }
+      return true;
+    }
+
+    // Q2 and higher: volume average over the cell (mean dilatation), J0 = int J dV / V
+    // (small strain: the average of tr(F - I)); d ln J0 / du_j = int J tr(F^-1 G_j) dV / (V J0)
+    const FEValues<dim> &fe_values = scratch.fe_values;
+    double               volume = 0.;
+    J0 = 0.;
+    std::fill(dlnJ0.begin(), dlnJ0.end(), 0.);
+    for (unsigned int q = 0; q < setup.n_q; ++q)
+    {
+      const Point<dim>  &X = fe_values.quadrature_point(q);
+      const double       dV = fe_values.JxW(q) * kinematics.volume_factor(X);
+      const Tensor<2, 3> F
+          = kinematics.deformation_gradient(scratch.grad_u[q], scratch.u_values[q], X);
+      const double       J = determinant(F);
+      const double       weight = small_strain ? dV : J * dV;
+      const Tensor<2, 3> F_inv = small_strain ? Tensor<2, 3>() : invert(F);
+      volume += dV;
+      J0 += J * dV;
+      trace_H0 += (trace(F) - 3.) * dV;
+      for (unsigned int j = 0; j < setup.n_dofs; ++j)
+      {
+        const unsigned int   c = component[j];
+        const Tensor<1, dim> grad = fe_values.shape_grad_component(j, q, c);
+        const double         hoop_j
+            = (axisymmetric && c == 0) ? fe_values.shape_value_component(j, q, c) / X[0] : 0.;
+        dlnJ0[j] += weight * volume_change_rate<dim>(small_strain, F_inv, c, grad, hoop_j);
+      }
+    }
+    J0 /= volume;
+    trace_H0 /= volume;
+    for (unsigned int j = 0; j < setup.n_dofs; ++j)
+      dlnJ0[j] /= small_strain ? volume : volume * J0;
+    if (setup.check_inversion && !(J0 > 0.))
+    {
+      std::ostringstream msg;
+      msg << "inverted element (mean det F = " << J0 << " in the cell at " << cell->center() << ")";
+      copy.fail(msg.str());
+      return false;
+    }
+    return true;
+  }
+
+  template <int dim>
+  void Assembler<dim>::assemble_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                     const Setup                                          &setup,
+                                     ScratchData                                          &scratch,
+                                     CopyData &copy) const
+  {
+    const FEValuesExtractors::Vector displacement(0);
+    const unsigned int               n_dofs = setup.n_dofs;
+    const std::vector<unsigned int> &component = setup.component;
+    const bool                       small_strain = setup.small_strain;
+    const bool                       f_bar = setup.f_bar;
+    const bool                       axisymmetric = setup.axisymmetric;
+    const bool                       need_matrix = setup.need_matrix;
+    const unsigned int               n_vol = setup.n_vol;
+    const double                     alpha = setup.alpha;
+    const Tensor<2, 3>              &E = setup.E;
+
+    FEValues<dim> &fe_values = scratch.fe_values;
+    auto          &g = scratch.g;
+    auto          &hoop = scratch.hoop;
+    auto          &h = scratch.h;
+    auto          &h_hoop = scratch.h_hoop;
+    auto          &dlnJ0 = scratch.dlnJ0;
+    auto          &dlnJ = scratch.dlnJ;
+    auto          &q_coefficient = scratch.q_coefficient;
+    Tensor<2, 3>  &P = scratch.P;
+    Tensor<2, 3>  &P_bar = scratch.P_bar;
+    Tensor<4, 3>  &A = scratch.A;
+    // G_i : M for a 3x3 M
+    auto contract = [&](const Tensor<2, 3> &M, const unsigned int i)
+    {
+      const unsigned int c = component[i];
+      double             sum = M[2][2] * hoop[i];
+      for (unsigned int J = 0; J < dim; ++J)
+        sum += M[c][J] * g[i][J];
+      return sum;
+    };
+
+    fe_values.reinit(cell);
+    fe_values[displacement].get_function_gradients(*setup.solution, scratch.grad_u);
+    fe_values[displacement].get_function_values(*setup.solution, scratch.u_values);
+    const std::vector<std::shared_ptr<material::MaterialPoint>> points
+        = setup.material_points->get_data(cell);
+
+    copy.cell_matrix = 0.;
+    copy.cell_residual = 0.;
+    copy.cell_external = 0.;
+    FullMatrix<double> &cell_matrix = copy.cell_matrix;
+    Vector<double>     &cell_residual = copy.cell_residual;
+
+    // F-bar: the deformation gradient at the cell centre and d(ln J0)/du_j (small strain:
+    // tr(F0 - I) and tr G0_j)
+    if (f_bar && !f_bar_reference(cell, setup, scratch, copy))
+      return;
+    const double J0 = f_bar ? scratch.J0 : 1.;
+    const double trace_H0 = f_bar ? scratch.trace_H0 : 0.;
+
+    for (unsigned int q = 0; q < setup.n_q; ++q)
+    {
+      const Point<dim>  &X = fe_values.quadrature_point(q);
+      const double       dV = fe_values.JxW(q) * kinematics.volume_factor(X);
+      const Tensor<2, 3> F
+          = kinematics.deformation_gradient(scratch.grad_u[q], scratch.u_values[q], X);
+      const double J = determinant(F);
+      copy.min_jacobian = std::min(copy.min_jacobian, J);
+      if (setup.check_inversion && !(J > 0.))
+      {
+        std::ostringstream msg;
+        msg << "inverted element (det F = " << J << ") at (" << X << ")";
+        copy.fail(msg.str());
+        return;
+      }
+
+      for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        const unsigned int   c = component[i];
+        const Tensor<1, dim> grad = fe_values.shape_grad_component(i, q, c);
+        for (unsigned int J = 0; J < dim; ++J)
+          g[i][J] = grad[J];
+        if (axisymmetric && c == 0)
+          hoop[i] = fe_values.shape_value_component(i, q, c) / X[0];
+      }
+
+      // Deformation gradient seen by the material point; residual stress P_res (P = P(F) or
+      // kappa P(F_bar)) and the factor of the material tangent term.
+      Tensor<2, 3> F_material = F;
+      double       s = 1., kappa = 1.;
+      Tensor<2, 3> F_inv;
+      if (f_bar)
+      {
+        if (small_strain)
+          F_material += (alpha * (trace_H0 - (trace(F) - 3.))) * E;
+        else
+        {
+          s = std::pow(J0 / J, alpha);
+          kappa = std::pow(s, 1. - n_vol);
+          for (unsigned int a = 0; a < n_vol; ++a)
+            for (unsigned int b = 0; b < n_vol; ++b)
+              F_material[a][b] *= s;
+          F_inv = invert(F);
+        }
+      }
+      try
+      {
+        model.evaluate(
+            F_material, points[q]->committed, points[q]->trial, P_bar, need_matrix ? &A : nullptr);
+      }
+      catch (const RunFailure &e)
+      {
+        copy.fail(e.what());
+        return;
+      }
+      P = kappa * P_bar;
+
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        cell_residual(i) += contract(P, i) * dV;
+
+      if (!need_matrix)
+        continue;
+      for (unsigned int j = 0; j < n_dofs; ++j)
+      {
+        const unsigned int cj = component[j];
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int I = 0; I < dim; ++I)
+          {
+            double sum = A[c][I][2][2] * hoop[j];
+            for (unsigned int J = 0; J < dim; ++J)
+              sum += A[c][I][cj][J] * g[j][J];
+            h[j][c][I] = sum;
+          }
+        if (axisymmetric)
+        {
+          double sum = A[2][2][2][2] * hoop[j];
+          for (unsigned int J = 0; J < dim; ++J)
+            sum += A[2][2][cj][J] * g[j][J];
+          h_hoop[j] = sum;
+        }
+      }
+      const double material_factor = kappa * s * dV;
+      for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        const unsigned int c = component[i];
+        for (unsigned int j = 0; j < n_dofs; ++j)
+        {
+          double sum = hoop[i] * h_hoop[j];
+          for (unsigned int I = 0; I < dim; ++I)
+            sum += g[i][I] * h[j][c][I];
+          cell_matrix(i, j) += sum * material_factor;
+        }
+      }
+
+      if (f_bar)
+      {
+        // d F_bar / du_j = s G_j + alpha s (d ln J0 - d ln J) E F (large strain) or
+        // G_j + alpha (tr G0_j - tr G_j) E (small strain); d kappa / du_j = (alpha - 1)
+        // kappa (d ln J0 - d ln J). The terms in (d ln J0 - d ln J) form the rank-one matrix
+        // q_i (dlnJ0_j - dlnJ_j) with q_i = G_i : Qt dV,
+        // Qt = kappa [(alpha - 1) P_bar + alpha s A : (E F)] (small strain: alpha A : E).
+        Tensor<2, 3>       Qt;
+        const Tensor<2, 3> EF = small_strain ? E : E * F;
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int b = 0; b < 3; ++b)
+          {
+            double sum = 0.;
+            for (unsigned int k = 0; k < 3; ++k)
+              for (unsigned int l = 0; l < 3; ++l)
+                sum += A[a][b][k][l] * EF[k][l];
+            Qt[a][b] = small_strain ? alpha * sum
+                                    : kappa * ((alpha - 1.) * P_bar[a][b] + alpha * s * sum);
+          }
+        for (unsigned int i = 0; i < n_dofs; ++i)
+        {
+          const unsigned int c = component[i];
+          q_coefficient[i] = contract(Qt, i) * dV;
+          dlnJ[i] = volume_change_rate<dim>(small_strain, F_inv, c, g[i], hoop[i]);
+        }
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          for (unsigned int j = 0; j < n_dofs; ++j)
+            cell_matrix(i, j) += q_coefficient[i] * (dlnJ0[j] - dlnJ[j]);
+      }
+    }
+  }
+
+  template <int dim>
+  void
+  Assembler<dim>::assemble_face_loads(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                      const Setup                                          &setup,
+                                      ScratchData                                          &scratch,
+                                      CopyData &copy) const
+  {
+    const FEValuesExtractors::Vector displacement(0);
+    const std::vector<unsigned int> &component = setup.component;
+    const unsigned int               n_dofs = setup.n_dofs;
+    const bool                       follower = setup.follower;
+    const bool                       axisymmetric = setup.axisymmetric;
+    const bool                       need_matrix = setup.need_matrix;
+    FEFaceValues<dim>               &fe_face_values = scratch.fe_face_values;
+    FullMatrix<double>              &cell_matrix = copy.cell_matrix;
+    Vector<double>                  &cell_external = copy.cell_external;
+
+    for (const auto &face : cell->face_iterators())
+      if (face->at_boundary() && boundary_conditions.has_surface_load(face->boundary_id()))
+      {
+        fe_face_values.reinit(cell, face);
+        if (follower)
+        {
+          fe_face_values[displacement].get_function_gradients(*setup.solution, scratch.grad_u_face);
+          fe_face_values[displacement].get_function_values(*setup.solution, scratch.u_face);
+        }
+        for (unsigned int q = 0; q < setup.n_face_q; ++q)
+        {
+          const Point<dim>        &X = fe_face_values.quadrature_point(q);
+          const Tensor<1, dim>    &N = fe_face_values.normal_vector(q);
+          const double             dA = fe_face_values.JxW(q) * kinematics.volume_factor(X);
+          const types::boundary_id id = face->boundary_id();
+          Tensor<1, dim>           t;
+          double                   p = 0.;
+          {
+            std::lock_guard<std::mutex> lock(setup.load_mutex);
+            t = follower ? boundary_conditions.dead_traction(id, X, setup.time)
+                         : boundary_conditions.traction(id, X, N, setup.time);
+            p = follower ? boundary_conditions.pressure(id, X, setup.time) : 0.;
+          }
+          AssertThrow(dim == 2 || p == 0.,
+                      ExcMessage("follower pressure is implemented for 2D models only"));
+          if constexpr (dim == 2)
+            if (follower && p != 0.)
+            {
+              // deformed tangent a = F T (T = N rotated by +90 degrees), deformed normal times
+              // dl/dL = (a_y, -a_x); axisymmetric: times the hoop stretch r / R
+              const Tensor<1, 2> T({-N[1], N[0]});
+              const Tensor<1, 2> a = T + scratch.grad_u_face[q] * T;
+              const Tensor<1, 2> n_scaled({a[1], -a[0]});
+              const double hoop_stretch = axisymmetric ? 1. + scratch.u_face[q][0] / X[0] : 1.;
+              t -= (p * hoop_stretch) * n_scaled;
+              if (need_matrix)
+                for (unsigned int j = 0; j < n_dofs; ++j)
+                {
+                  // d t0 / du_j = -p (r/R d n_scaled + d(r/R) n_scaled), d a = (grad phi_j . T)
+                  // e_cj
+                  const unsigned int cj = component[j];
+                  const double       da = fe_face_values.shape_grad_component(j, q, cj) * T;
+                  Tensor<1, 2>       dt;
+                  if (cj == 0)
+                    dt[1] = -hoop_stretch * da;
+                  else
+                    dt[0] = hoop_stretch * da;
+                  if (axisymmetric && cj == 0)
+                    dt += (fe_face_values.shape_value_component(j, q, cj) / X[0]) * n_scaled;
+                  dt *= -p * dA;
+                  for (unsigned int i = 0; i < n_dofs; ++i)
+                    cell_matrix(i, j) -= dt[component[i]]
+                                         * fe_face_values.shape_value_component(i, q, component[i]);
+                }
+            }
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            cell_external(i)
+                += t[component[i]] * fe_face_values.shape_value_component(i, q, component[i]) * dA;
+        }
+      }
+  }
+
+  template <int dim>
+  void Assembler<dim>::apply_row_transforms(const Setup &setup, CopyData &copy) const
+  {
+    // Row transforms (friction) act on the equations of whole nodes.
+    copy.cell_free = copy.cell_residual;
+    const RowTransforms<dim> *row_transforms = setup.row_transforms;
+    if (row_transforms == nullptr || row_transforms->empty())
+      return;
+    const auto &node_dofs = setup.node_dofs;
+    for (unsigned int b = 0; b < setup.n_base; ++b)
+    {
+      const auto it = row_transforms->find(copy.dofs[node_dofs[b][0]]);
+      if (it == row_transforms->end())
+        continue;
+      const Tensor<2, dim>   &T = it->second.matrix;
+      std::array<double, dim> old_r;
+      for (unsigned int c = 0; c < dim; ++c)
+        old_r[c] = copy.cell_residual(node_dofs[b][c]);
+      for (unsigned int c = 0; c < dim; ++c)
+      {
+        double s = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          s += T[c][d] * old_r[d];
+        copy.cell_free(node_dofs[b][c]) = s;
+      }
+      if (setup.need_matrix)
+        for (unsigned int j = 0; j < setup.n_dofs; ++j)
+        {
+          std::array<double, dim> old_k;
+          for (unsigned int c = 0; c < dim; ++c)
+            old_k[c] = copy.cell_matrix(node_dofs[b][c], j);
+          for (unsigned int c = 0; c < dim; ++c)
+          {
+            double s = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              s += T[c][d] * old_k[d];
+            copy.cell_matrix(node_dofs[b][c], j) = s;
+          }
+        }
+    }
+  }
+
+  template <int dim>
+  void Assembler<dim>::copy_local_to_global(const CopyData &copy, const Setup &setup_in) const
+  {
+    // The copier runs serially and in cell order: it owns the outcome in Setup.
+    Setup &setup = const_cast<Setup &>(setup_in);
+    if (!setup.ok)
+      return; // after a failure nothing more is added (the assembly is discarded)
+    setup.min_jacobian = std::min(setup.min_jacobian, copy.min_jacobian);
+    if (!copy.ok)
+    {
+      setup.ok = false;
+      setup.message = copy.message;
+      return;
+    }
+    const AssemblyTargets &targets = *setup.targets;
+    setup.hanging->distribute_local_to_global(copy.cell_residual, copy.dofs, *targets.residual);
+    setup.hanging->distribute_local_to_global(
+        copy.cell_external, copy.dofs, *targets.external_force);
+    if (targets.free_residual != nullptr)
+      setup.newton->distribute_local_to_global(copy.cell_free, copy.dofs, *targets.free_residual);
+    if (setup.need_matrix)
+    {
+      Vector<double> &cell_rhs = const_cast<CopyData &>(copy).cell_rhs;
+      cell_rhs = copy.cell_free;
+      cell_rhs *= -1.;
+      setup.newton->distribute_local_to_global(
+          copy.cell_matrix, cell_rhs, copy.dofs, *targets.matrix, *targets.rhs, true);
+    }
+  }
+
   template <int dim>
   AssemblyStatus Assembler<dim>::assemble(const DoFHandler<dim>               &dof_handler,
                                           const TrilinosWrappers::MPI::Vector &solution,
@@ -42,460 +635,72 @@ namespace ausroll::mechanics
                                           const AssemblyTargets               &targets) const
   {
     Assert(targets.residual != nullptr && targets.external_force != nullptr, ExcInternalError());
-    const bool need_matrix = targets.matrix != nullptr;
 
-    const bool small_strain = model.is_small_strain();
-    const bool f_bar = locking == VolumetricLocking::f_bar;
-    // J0: value at the cell centre for Q1 (de Souza Neto), cell average for higher degrees (a
-    // single centre value leaves volumetric modes of Q2 unconstrained: too soft)
-    const bool cell_average = fe.degree > 1;
-    const bool follower = !small_strain; // pressure on the deformed surface
-
-    FEValues<dim>     fe_values(mapping,
-                            fe,
-                            cell_quadrature,
-                            update_values | update_gradients | update_quadrature_points
-                                | update_JxW_values);
-    FEFaceValues<dim> fe_face_values(mapping,
-                                     fe,
-                                     face_quadrature,
-                                     update_values | update_gradients | update_quadrature_points
-                                         | update_normal_vectors | update_JxW_values);
-    // F-bar: values and gradients at the cell centre
-    Point<dim> unit_center;
-    for (unsigned int d = 0; d < dim; ++d)
-      unit_center[d] = 0.5;
-    FEValues<dim> fe_center(mapping,
-                            fe,
-                            Quadrature<dim>(unit_center),
-                            update_values | update_gradients | update_quadrature_points);
-
-    const unsigned int n_dofs = fe.n_dofs_per_cell();
-    const unsigned int n_q = cell_quadrature.size();
-    const unsigned int n_face_q = face_quadrature.size();
-    const unsigned int n_base = n_dofs / dim; // support points of the FE_Q base element
-
-    FullMatrix<double>                   cell_matrix(n_dofs, n_dofs);
-    Vector<double>                       cell_residual(n_dofs), cell_external(n_dofs);
-    Vector<double>                       cell_free(n_dofs), cell_rhs(n_dofs);
-    std::vector<types::global_dof_index> dofs(n_dofs);
-    std::vector<Tensor<2, dim>>          grad_u(n_q), grad_u_face(n_face_q), grad_u_center(1);
-    std::vector<Tensor<1, dim>>          u_values(n_q), u_face(n_face_q), u_center(1);
-    const FEValuesExtractors::Vector     displacement(0);
-
-    // Component of each shape function and the local DoFs of each support point.
-    std::vector<unsigned int>            component(n_dofs);
-    std::vector<std::array<unsigned, 3>> node_dofs(n_base);
-    for (unsigned int i = 0; i < n_dofs; ++i)
+    Setup setup;
+    setup.solution = &solution;
+    setup.time = time;
+    setup.material_points = &material_points;
+    setup.hanging = &hanging;
+    setup.newton = &newton;
+    setup.row_transforms = row_transforms;
+    setup.targets = &targets;
+    setup.need_matrix = targets.matrix != nullptr;
+    setup.small_strain = model.is_small_strain();
+    setup.f_bar = locking == VolumetricLocking::f_bar;
+    setup.cell_average = fe.degree > 1;
+    setup.follower = !setup.small_strain;
+    setup.axisymmetric = kinematics.is_axisymmetric();
+    setup.check_inversion = !setup.small_strain;
+    setup.n_dofs = fe.n_dofs_per_cell();
+    setup.n_q = cell_quadrature.size();
+    setup.n_face_q = face_quadrature.size();
+    setup.n_base = setup.n_dofs / dim; // support points of the FE_Q base element
+    setup.component.resize(setup.n_dofs);
+    setup.node_dofs.resize(setup.n_base);
+    for (unsigned int i = 0; i < setup.n_dofs; ++i)
     {
       const auto ci = fe.system_to_component_index(i);
-      component[i] = ci.first;
-      node_dofs[ci.second][ci.first] = i;
+      setup.component[i] = ci.first;
+      setup.node_dofs[ci.second][ci.first] = i;
     }
-
-    // The 3D gradient G_i = dF/du_i of each shape function (3x3): row c_i holds the in-plane
-    // gradient, g[i][J] = dF[c_i][J] / du_i (J < dim), and axisymmetric models add the hoop entry
-    // hoop[i] = dF[2][2] / du_i = phi_i / R for the radial component (c_i = 0).
-    std::vector<std::array<double, dim>> g(n_dofs);
-    std::vector<double>                  hoop(n_dofs, 0.);
-    // h[j][c][I] = (A : G_j)[c][I] for c, I < dim and h_hoop[j] = (A : G_j)[2][2]
-    std::vector<std::array<std::array<double, dim>, dim>> h(n_dofs);
-    std::vector<double>                                   h_hoop(n_dofs, 0.);
-    const bool axisymmetric = kinematics.is_axisymmetric();
-    // G_i : M for a 3x3 M
-    auto contract = [&](const Tensor<2, 3> &M, const unsigned int i)
-    {
-      const unsigned int c = component[i];
-      double             sum = M[2][2] * hoop[i];
-      for (unsigned int J = 0; J < dim; ++J)
-        sum += M[c][J] * g[i][J];
-      return sum;
-    };
-    // F-bar: d ln J0 / du_j at the centre, d ln J / du_j at the point (tr G for small strain), and
-    // the coefficients q_i of the rank-one cell-centre term of the tangent
-    std::vector<double> dlnJ0(n_dofs), dlnJ(n_dofs), q_coefficient(n_dofs);
-
-    // n of the F-bar scaling and the in-plane/volumetric projection E (I_n)
     // Q2 and higher in plane strain: isotropic scaling of the whole F (n = 3, F_bar_zz = s, as the
     // B-bar of Hughes with eps_bar_zz = (theta_0 - theta) / 3); the in-plane scaling leaks the
     // volume correction into the 3D deviatoric strain and made Q2 too soft (flat punch: 0.928
     // p_lim instead of 0.998)
-    const unsigned int n_vol
-        = (cell_average && dim == 2 && kinematics.planar_model() == PlanarModel::plane_strain)
+    setup.n_vol
+        = (setup.cell_average && dim == 2 && kinematics.planar_model() == PlanarModel::plane_strain)
               ? 3
               : kinematics.volumetric_dimensions();
-    const double alpha = 1. / n_vol;
-    Tensor<2, 3> E;
-    for (unsigned int d = 0; d < n_vol; ++d)
-      E[d][d] = 1.;
+    setup.alpha = 1. / setup.n_vol;
+    for (unsigned int d = 0; d < setup.n_vol; ++d)
+      setup.E[d][d] = 1.;
 
-    Tensor<2, 3> P, P_bar;
-    Tensor<4, 3> A;
-    const bool   check_inversion = !small_strain;
-
-    bool        ok = true;
-    double      min_jacobian = 1e300;
-    std::string message;
-
-    auto fail = [&](const std::string &text)
-    {
-      ok = false;
-      message = text;
-    };
-
-    for (const auto &cell : dof_handler.active_cell_iterators())
-    {
-      if (!cell->is_locally_owned())
-        continue;
-      fe_values.reinit(cell);
-      fe_values[displacement].get_function_gradients(solution, grad_u);
-      fe_values[displacement].get_function_values(solution, u_values);
-      const std::vector<std::shared_ptr<material::MaterialPoint>> points
-          = material_points.get_data(cell);
-
-      cell_matrix = 0.;
-      cell_residual = 0.;
-      cell_external = 0.;
-
-      // F-bar: the deformation gradient at the cell centre and d(ln J0)/du_j (small strain:
-      // tr(F0 - I) and tr G0_j)
-      double       J0 = 1., trace_H0 = 0.;
-      Tensor<2, 3> F0_inv;
-      if (f_bar && !cell_average)
-      {
-        // Q1: the deformation gradient at the cell centre
-        fe_center.reinit(cell);
-        fe_center[displacement].get_function_gradients(solution, grad_u_center);
-        fe_center[displacement].get_function_values(solution, u_center);
-        const Point<dim>  &X0 = fe_center.quadrature_point(0);
-        const Tensor<2, 3> F0 = kinematics.deformation_gradient(grad_u_center[0], u_center[0], X0);
-        J0 = determinant(F0);
-        trace_H0 = trace(F0) - 3.;
-        if (check_inversion && !(J0 > 0.))
+    // The cell loop on the threads of DEAL_II_NUM_THREADS (step-44): the worker fills one cell's
+    // CopyData, the copier adds it to the targets in cell order.
+    using CellFilter = FilteredIterator<typename DoFHandler<dim>::active_cell_iterator>;
+    WorkStream::run(
+        CellFilter(IteratorFilters::LocallyOwnedCell(), dof_handler.begin_active()),
+        CellFilter(IteratorFilters::LocallyOwnedCell(), dof_handler.end()),
+        [this, &setup](const typename DoFHandler<dim>::active_cell_iterator &cell,
+                       ScratchData                                          &scratch,
+                       CopyData                                             &copy)
         {
-          std::ostringstream msg;
-          msg << "inverted element (det F = " << J0 << " at the cell centre " << X0 << ")";
-          fail(msg.str());
-          continue;
-        }
-        if (!small_strain)
-          F0_inv = invert(F0);
-        for (unsigned int j = 0; j < n_dofs; ++j)
-        {
-          // tr G0_j (small strain) or tr(F0^-1 G0_j) = d ln J0 / du_j
-          const unsigned int   c = component[j];
-          const Tensor<1, dim> grad = fe_center.shape_grad_component(j, 0, c);
-          const double         hoop0
-              = (axisymmetric && c == 0) ? fe_center.shape_value_component(j, 0, c) / X0[0] : 0.;
-          if (small_strain)
-            dlnJ0[j] = grad[c] + hoop0;
-          else
-          {
-            double l = F0_inv[2][2] * hoop0;
-            for (unsigned int J = 0; J < dim; ++J)
-              l += F0_inv[J][c] * grad[J];
-            dlnJ0[j] = l;
-          }
-        }
-      }
-      else if (f_bar)
-      {
-        // Q2 and higher: volume average over the cell (mean dilatation), J0 = int J dV / V
-        // (small strain: the average of tr(F - I)); d ln J0 / du_j = int J tr(F^-1 G_j) dV / (V J0)
-        double volume = 0.;
-        J0 = 0.;
-        std::fill(dlnJ0.begin(), dlnJ0.end(), 0.);
-        for (unsigned int q = 0; q < n_q; ++q)
-        {
-          const Point<dim>  &X = fe_values.quadrature_point(q);
-          const double       dV = fe_values.JxW(q) * kinematics.volume_factor(X);
-          const Tensor<2, 3> F = kinematics.deformation_gradient(grad_u[q], u_values[q], X);
-          const double       J = determinant(F);
-          const double       weight = small_strain ? dV : J * dV;
-          const Tensor<2, 3> F_inv = small_strain ? Tensor<2, 3>() : invert(F);
-          volume += dV;
-          J0 += J * dV;
-          trace_H0 += (trace(F) - 3.) * dV;
-          for (unsigned int j = 0; j < n_dofs; ++j)
-          {
-            const unsigned int   c = component[j];
-            const Tensor<1, dim> grad = fe_values.shape_grad_component(j, q, c);
-            const double         hoop_j
-                = (axisymmetric && c == 0) ? fe_values.shape_value_component(j, q, c) / X[0] : 0.;
-            double l = 0.;
-            if (small_strain)
-              l = grad[c] + hoop_j;
-            else
-            {
-              l = F_inv[2][2] * hoop_j;
-              for (unsigned int J = 0; J < dim; ++J)
-                l += F_inv[J][c] * grad[J];
-            }
-            dlnJ0[j] += weight * l;
-          }
-        }
-        J0 /= volume;
-        trace_H0 /= volume;
-        for (unsigned int j = 0; j < n_dofs; ++j)
-          dlnJ0[j] /= small_strain ? volume : volume * J0;
-        if (check_inversion && !(J0 > 0.))
-        {
-          std::ostringstream msg;
-          msg << "inverted element (mean det F = " << J0 << " in the cell at " << cell->center()
-              << ")";
-          fail(msg.str());
-          continue;
-        }
-      }
-
-      for (unsigned int q = 0; q < n_q && ok; ++q)
-      {
-        const Point<dim>  &X = fe_values.quadrature_point(q);
-        const double       dV = fe_values.JxW(q) * kinematics.volume_factor(X);
-        const Tensor<2, 3> F = kinematics.deformation_gradient(grad_u[q], u_values[q], X);
-        const double       J = determinant(F);
-        min_jacobian = std::min(min_jacobian, J);
-        if (check_inversion && !(J > 0.))
-        {
-          std::ostringstream msg;
-          msg << "inverted element (det F = " << J << ") at (" << X << ")";
-          fail(msg.str());
-          break;
-        }
-
-        for (unsigned int i = 0; i < n_dofs; ++i)
-        {
-          const unsigned int   c = component[i];
-          const Tensor<1, dim> grad = fe_values.shape_grad_component(i, q, c);
-          for (unsigned int J = 0; J < dim; ++J)
-            g[i][J] = grad[J];
-          if (axisymmetric && c == 0)
-            hoop[i] = fe_values.shape_value_component(i, q, c) / X[0];
-        }
-
-        // Deformation gradient seen by the material point; residual stress P_res (P = P(F) or
-        // kappa P(F_bar)) and the factor of the material tangent term.
-        Tensor<2, 3> F_material = F;
-        double       s = 1., kappa = 1.;
-        Tensor<2, 3> F_inv;
-        if (f_bar)
-        {
-          if (small_strain)
-            F_material += (alpha * (trace_H0 - (trace(F) - 3.))) * E;
-          else
-          {
-            s = std::pow(J0 / J, alpha);
-            kappa = std::pow(s, 1. - n_vol);
-            for (unsigned int a = 0; a < n_vol; ++a)
-              for (unsigned int b = 0; b < n_vol; ++b)
-                F_material[a][b] *= s;
-            F_inv = invert(F);
-          }
-        }
-        try
-        {
-          model.evaluate(F_material,
-                         points[q]->committed,
-                         points[q]->trial,
-                         P_bar,
-                         need_matrix ? &A : nullptr);
-        }
-        catch (const RunFailure &e)
-        {
-          fail(e.what());
-          break;
-        }
-        P = kappa * P_bar;
-
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          cell_residual(i) += contract(P, i) * dV;
-
-        if (need_matrix)
-        {
-          for (unsigned int j = 0; j < n_dofs; ++j)
-          {
-            const unsigned int cj = component[j];
-            for (unsigned int c = 0; c < dim; ++c)
-              for (unsigned int I = 0; I < dim; ++I)
-              {
-                double sum = A[c][I][2][2] * hoop[j];
-                for (unsigned int J = 0; J < dim; ++J)
-                  sum += A[c][I][cj][J] * g[j][J];
-                h[j][c][I] = sum;
-              }
-            if (axisymmetric)
-            {
-              double sum = A[2][2][2][2] * hoop[j];
-              for (unsigned int J = 0; J < dim; ++J)
-                sum += A[2][2][cj][J] * g[j][J];
-              h_hoop[j] = sum;
-            }
-          }
-          const double material_factor = kappa * s * dV;
-          for (unsigned int i = 0; i < n_dofs; ++i)
-          {
-            const unsigned int c = component[i];
-            for (unsigned int j = 0; j < n_dofs; ++j)
-            {
-              double sum = hoop[i] * h_hoop[j];
-              for (unsigned int I = 0; I < dim; ++I)
-                sum += g[i][I] * h[j][c][I];
-              cell_matrix(i, j) += sum * material_factor;
-            }
-          }
-
-          if (f_bar)
-          {
-            // d F_bar / du_j = s G_j + alpha s (d ln J0 - d ln J) E F (large strain) or
-            // G_j + alpha (tr G0_j - tr G_j) E (small strain); d kappa / du_j = (alpha - 1)
-            // kappa (d ln J0 - d ln J). The terms in (d ln J0 - d ln J) form the rank-one matrix
-            // q_i (dlnJ0_j - dlnJ_j) with q_i = G_i : Qt dV,
-            // Qt = kappa [(alpha - 1) P_bar + alpha s A : (E F)] (small strain: alpha A : E).
-            Tensor<2, 3>       Qt;
-            const Tensor<2, 3> EF = small_strain ? E : E * F;
-            for (unsigned int a = 0; a < 3; ++a)
-              for (unsigned int b = 0; b < 3; ++b)
-              {
-                double sum = 0.;
-                for (unsigned int k = 0; k < 3; ++k)
-                  for (unsigned int l = 0; l < 3; ++l)
-                    sum += A[a][b][k][l] * EF[k][l];
-                Qt[a][b] = small_strain ? alpha * sum
-                                        : kappa * ((alpha - 1.) * P_bar[a][b] + alpha * s * sum);
-              }
-            for (unsigned int i = 0; i < n_dofs; ++i)
-            {
-              const unsigned int c = component[i];
-              q_coefficient[i] = contract(Qt, i) * dV;
-              if (small_strain)
-                dlnJ[i] = g[i][c] + hoop[i]; // tr G_i
-              else
-              {
-                double l = F_inv[2][2] * hoop[i];
-                for (unsigned int J = 0; J < dim; ++J)
-                  l += F_inv[J][c] * g[i][J];
-                dlnJ[i] = l;
-              }
-            }
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              for (unsigned int j = 0; j < n_dofs; ++j)
-                cell_matrix(i, j) += q_coefficient[i] * (dlnJ0[j] - dlnJ[j]);
-          }
-        }
-      }
-      if (!ok)
-        continue; // keep looping so that every rank reaches the collective calls below
-
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && boundary_conditions.has_surface_load(face->boundary_id()))
-        {
-          fe_face_values.reinit(cell, face);
-          if (follower)
-          {
-            fe_face_values[displacement].get_function_gradients(solution, grad_u_face);
-            fe_face_values[displacement].get_function_values(solution, u_face);
-          }
-          for (unsigned int q = 0; q < n_face_q; ++q)
-          {
-            const Point<dim>        &X = fe_face_values.quadrature_point(q);
-            const Tensor<1, dim>    &N = fe_face_values.normal_vector(q);
-            const double             dA = fe_face_values.JxW(q) * kinematics.volume_factor(X);
-            const types::boundary_id id = face->boundary_id();
-            Tensor<1, dim>           t = follower ? boundary_conditions.dead_traction(id, X, time)
-                                                  : boundary_conditions.traction(id, X, N, time);
-            const double             p = follower ? boundary_conditions.pressure(id, X, time) : 0.;
-            AssertThrow(dim == 2 || p == 0.,
-                        ExcMessage("follower pressure is implemented for 2D models only"));
-            if constexpr (dim == 2)
-              if (follower && p != 0.)
-              {
-                // deformed tangent a = F T (T = N rotated by +90 degrees), deformed normal times
-                // dl/dL = (a_y, -a_x); axisymmetric: times the hoop stretch r / R
-                const Tensor<1, 2> T({-N[1], N[0]});
-                const Tensor<1, 2> a = T + grad_u_face[q] * T;
-                const Tensor<1, 2> n_scaled({a[1], -a[0]});
-                const double       hoop_stretch = axisymmetric ? 1. + u_face[q][0] / X[0] : 1.;
-                t -= (p * hoop_stretch) * n_scaled;
-                if (need_matrix)
-                  for (unsigned int j = 0; j < n_dofs; ++j)
-                  {
-                    // d t0 / du_j = -p (r/R d n_scaled + d(r/R) n_scaled), d a = (grad phi_j . T)
-                    // e_cj
-                    const unsigned int cj = component[j];
-                    const double       da = fe_face_values.shape_grad_component(j, q, cj) * T;
-                    Tensor<1, 2>       dt;
-                    if (cj == 0)
-                      dt[1] = -hoop_stretch * da;
-                    else
-                      dt[0] = hoop_stretch * da;
-                    if (axisymmetric && cj == 0)
-                      dt += (fe_face_values.shape_value_component(j, q, cj) / X[0]) * n_scaled;
-                    dt *= -p * dA;
-                    for (unsigned int i = 0; i < n_dofs; ++i)
-                      cell_matrix(i, j)
-                          -= dt[component[i]]
-                             * fe_face_values.shape_value_component(i, q, component[i]);
-                  }
-              }
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              cell_external(i) += t[component[i]]
-                                  * fe_face_values.shape_value_component(i, q, component[i]) * dA;
-          }
-        }
-      cell_residual -= cell_external;
-
-      cell->get_dof_indices(dofs);
-      hanging.distribute_local_to_global(cell_residual, dofs, *targets.residual);
-      hanging.distribute_local_to_global(cell_external, dofs, *targets.external_force);
-
-      // Row transforms (friction) act on the equations of whole nodes.
-      cell_free = cell_residual;
-      if (row_transforms != nullptr && !row_transforms->empty())
-        for (unsigned int b = 0; b < n_base; ++b)
-        {
-          const auto it = row_transforms->find(dofs[node_dofs[b][0]]);
-          if (it == row_transforms->end())
-            continue;
-          const Tensor<2, dim>   &T = it->second.matrix;
-          std::array<double, dim> old_r;
-          for (unsigned int c = 0; c < dim; ++c)
-            old_r[c] = cell_residual(node_dofs[b][c]);
-          for (unsigned int c = 0; c < dim; ++c)
-          {
-            double s = 0.;
-            for (unsigned int d = 0; d < dim; ++d)
-              s += T[c][d] * old_r[d];
-            cell_free(node_dofs[b][c]) = s;
-          }
-          if (need_matrix)
-            for (unsigned int j = 0; j < n_dofs; ++j)
-            {
-              std::array<double, dim> old_k;
-              for (unsigned int c = 0; c < dim; ++c)
-                old_k[c] = cell_matrix(node_dofs[b][c], j);
-              for (unsigned int c = 0; c < dim; ++c)
-              {
-                double s = 0.;
-                for (unsigned int d = 0; d < dim; ++d)
-                  s += T[c][d] * old_k[d];
-                cell_matrix(node_dofs[b][c], j) = s;
-              }
-            }
-        }
-
-      if (targets.free_residual != nullptr)
-        newton.distribute_local_to_global(cell_free, dofs, *targets.free_residual);
-      if (need_matrix)
-      {
-        cell_rhs = cell_free;
-        cell_rhs *= -1.;
-        newton.distribute_local_to_global(
-            cell_matrix, cell_rhs, dofs, *targets.matrix, *targets.rhs, true);
-      }
-    }
+          copy.ok = true;
+          copy.min_jacobian = 1e300;
+          cell->get_dof_indices(copy.dofs);
+          assemble_cell(cell, setup, scratch, copy);
+          if (!copy.ok)
+            return;
+          assemble_face_loads(cell, setup, scratch, copy);
+          copy.cell_residual -= copy.cell_external;
+          apply_row_transforms(setup, copy);
+        },
+        [this, &setup](const CopyData &copy) { copy_local_to_global(copy, setup); },
+        ScratchData(mapping, fe, cell_quadrature, face_quadrature),
+        CopyData(setup.n_dofs));
 
     // Constant parts of the row transforms (shear friction), once per node by its owner.
-    if (row_transforms != nullptr && (targets.free_residual != nullptr || need_matrix))
+    if (row_transforms != nullptr && (targets.free_residual != nullptr || setup.need_matrix))
     {
       const IndexSet                      &owned = dof_handler.locally_owned_dofs();
       Vector<double>                       node_offset(dim);
@@ -511,7 +716,7 @@ namespace ausroll::mechanics
         }
         if (targets.free_residual != nullptr)
           newton.distribute_local_to_global(node_offset, node_dofs_global, *targets.free_residual);
-        if (need_matrix)
+        if (setup.need_matrix)
         {
           node_offset *= -1.;
           newton.distribute_local_to_global(node_offset, node_dofs_global, *targets.rhs);
@@ -523,7 +728,7 @@ namespace ausroll::mechanics
     targets.external_force->compress(VectorOperation::add);
     if (targets.free_residual != nullptr)
       targets.free_residual->compress(VectorOperation::add);
-    if (need_matrix)
+    if (setup.need_matrix)
     {
       targets.matrix->compress(VectorOperation::add);
       targets.rhs->compress(VectorOperation::add);
@@ -533,13 +738,13 @@ namespace ausroll::mechanics
     const MPI_Comm     comm = dof_handler.get_communicator();
     const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    const unsigned int bad_rank = Utilities::MPI::min(ok ? n_ranks : my_rank, comm);
+    const unsigned int bad_rank = Utilities::MPI::min(setup.ok ? n_ranks : my_rank, comm);
     AssemblyStatus     status;
-    status.min_jacobian = Utilities::MPI::min(min_jacobian, comm);
+    status.min_jacobian = Utilities::MPI::min(setup.min_jacobian, comm);
     if (bad_rank < n_ranks)
     {
       status.ok = false;
-      status.message = Utilities::MPI::broadcast(comm, message, bad_rank);
+      status.message = Utilities::MPI::broadcast(comm, setup.message, bad_rank);
     }
     return status;
   }

@@ -53,8 +53,12 @@ namespace ausroll::mechanics
 
   /**
    * Assembles residual and tangent of quasi-static equilibrium, div P = 0 in the reference
-   * configuration, for any ConstitutiveModel. The 3D embedding of the planar model comes from
-   * PlanarKinematics; surface loads from BoundaryConditions.
+   * configuration, for any ConstitutiveModel. In the shape of deal.II's step-44: a cell part
+   * (with the F-bar helper), a face-load part and a row-transform part run per cell by
+   * dealii::WorkStream on `DEAL_II_NUM_THREADS` threads (scratch and copy data), and a copier that
+   * adds each cell to the Trilinos targets through AffineConstraints::distribute_local_to_global
+   * in cell order, so the sums are the serial ones whatever the number of threads. The 3D embedding
+   * of the planar model comes from PlanarKinematics; surface loads from BoundaryConditions.
    *
    * Surface loads: `traction` conditions are dead loads per reference area. `pressure` conditions
    * act on the reference surface for a small-strain model and on the deformed surface otherwise
@@ -118,6 +122,39 @@ namespace ausroll::mechanics
                             const AssemblyTargets                       &targets) const;
 
   private:
+    struct Setup;       ///< what one assembly call needs in every cell (flags, tables, inputs)
+    struct ScratchData; ///< FEValues and work arrays of one thread (WorkStream scratch)
+    struct CopyData;    ///< local matrix and vectors of one cell, its failure (WorkStream copy)
+
+    /**
+     * F-bar helper: the reference volume change of the cell in @p scratch.fe_values (J0 and
+     * tr(F0 - I) at the cell centre for Q1, their volume averages for higher degrees) and
+     * d ln J0 / du_j (small strain: d tr(F0 - I) / du_j) into @p scratch. Returns false and sets
+     * @p copy's failure for an inverted reference.
+     */
+    bool f_bar_reference(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+                         const Setup                                                  &setup,
+                         ScratchData                                                  &scratch,
+                         CopyData                                                     &copy) const;
+
+    /** Internal forces and material tangent of one cell (the quadrature loop). */
+    void assemble_cell(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+                       const Setup                                                  &setup,
+                       ScratchData                                                  &scratch,
+                       CopyData                                                     &copy) const;
+
+    /** Surface loads (dead traction, follower pressure and its load stiffness) of one cell. */
+    void assemble_face_loads(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+                             const Setup                                                  &setup,
+                             ScratchData                                                  &scratch,
+                             CopyData &copy) const;
+
+    /** Friction row transforms on the rows of the cell's nodes (residual and tangent). */
+    void apply_row_transforms(const Setup &setup, CopyData &copy) const;
+
+    /** Add one cell to the targets (serial, in cell order: the WorkStream copier). */
+    void copy_local_to_global(const CopyData &copy, const Setup &setup) const;
+
     const dealii::Mapping<dim>        &mapping;
     const dealii::FiniteElement<dim>  &fe;
     const dealii::QGauss<dim>          cell_quadrature;
