@@ -151,6 +151,10 @@ ausroll_add_check(NAME contact_hertz_nested
 # Contact in parallel: np = 2 gives the np = 1 history (statuses, forces) to 1e-8.
 ausroll_add_parallel_check(NAME contact_block_slide_np2
   PRM ${AUSROLL_CHECKS_DIR}/scenes/block_slide.prm HISTORY out/history.csv)
+# The shear friction offsets are added once per node by its owning rank: the capped-law slide
+# (nodes on both branches) on 2 ranks gives the 1-rank history to 1e-8.
+ausroll_add_parallel_check(NAME contact_block_slide_capped_np2
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/block_slide_capped.prm HISTORY out/history.csv)
 ausroll_add_parallel_check(NAME contact_hertz_np2
   PRM ${CMAKE_CURRENT_BINARY_DIR}/hertz_quiet.prm HISTORY out/history.csv)
 
