@@ -66,7 +66,7 @@ def run_variant(ausroll, base_prm, work, name, overrides, np=1, reuse=False, tim
     subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "prm_variant.py"), base_prm, prm,
                     f"Output/Directory = {out}", "Output/Write VTU = false",
                     "Output/Verbosity = verbose"] + overrides, check=True)
-    command = [ausroll, prm]
+    command = [ausroll, prm, "--overwrite"]
     if np > 1:
         command = ["mpirun", "-np", str(np)] + command
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
