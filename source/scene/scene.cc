@@ -916,6 +916,12 @@ namespace ausroll::scene
     double       t_done = time;
     const double t_end = loading.end_time;
     const double start_fraction = t_done / t_end; // done before this process started
+    // Small strain is meant for displacements small against the body: warn (once) otherwise.
+    const auto box = GridTools::compute_bounding_box(triangulation).get_boundary_points();
+    double     smallest_extent = std::numeric_limits<double>::max();
+    for (unsigned int d = 0; d < dim; ++d)
+      smallest_extent = std::min(smallest_extent, box.second[d] - box.first[d]);
+    bool large_displacement_warned = !model->is_small_strain();
     while (t_done < t_end * (1. - 1e-12))
     {
       // Steps end on the grid of nominal steps (also after cutbacks and load-increment-ratio
@@ -939,6 +945,17 @@ namespace ausroll::scene
       const io::HistoryRow row = history_row(result, cutbacks);
       history->add_row(row);
 
+      if (!large_displacement_warned && solution.linfty_norm() > 0.1 * smallest_extent)
+      {
+        large_displacement_warned = true;
+        if (rank == 0)
+          std::cerr << "ausroll: warning: step " << step_number << ": displacements of "
+                    << solution.linfty_norm() << " mm exceed 10 % of the workpiece's smallest "
+                    << "extent (" << smallest_extent << " mm) with Model/Kinematics = small "
+                    << "strain; its results are not meaningful at this size: use a finite-strain "
+                       "kinematics"
+                    << std::endl;
+      }
       const double       elapsed = wall_clock.wall_time();
       const double       fraction = t_done / t_end;
       std::ostringstream percent;
