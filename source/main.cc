@@ -11,6 +11,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,37 @@ namespace
            "Run in parallel with: mpirun -np N ausroll FILE.prm\n"
            "Exit status: 0 success, 1 usage error, 2 input error, 3 run failure, 4 internal "
            "error.\n";
+  }
+
+  /**
+   * @p what on one line and without a deal.II developer block (file, function, violated
+   * condition, stack trace) that a wrapped deal.II exception brings along: only its "Additional
+   * information" is kept, after the text that wrapped it. At most 2000 characters (other
+   * messages: 4000).
+   */
+  std::string concise(std::string what)
+  {
+    if (what.find("Stacktrace:") == std::string::npos
+        && what.find("Additional information:") == std::string::npos)
+      return what.size() > 4000 ? what.substr(0, 4000) + " ..." : what;
+    const auto trace = what.find("Stacktrace:");
+    if (trace != std::string::npos)
+      what.erase(trace);
+    const auto info = what.find("Additional information:");
+    if (info != std::string::npos)
+    {
+      const auto        banner = what.find("-----");
+      const std::string prefix = banner < info ? what.substr(0, banner) : std::string();
+      what = prefix + what.substr(info + 23);
+    }
+    std::string        text, word;
+    std::istringstream words(what);
+    while (words >> word)
+      if (word.find_first_not_of('-') != std::string::npos)
+        text += (text.empty() ? "" : " ") + word;
+    if (text.size() > 2000)
+      text = text.substr(0, 2000) + " ...";
+    return text;
   }
 
   /** What the command line asks for. */
@@ -125,18 +157,18 @@ int main(int argc, char **argv)
   catch (const ausroll::InputError &e)
   {
     if (root)
-      std::cerr << "ausroll: input error: " << e.what() << std::endl;
+      std::cerr << "ausroll: input error: " << concise(e.what()) << std::endl;
     return 2;
   }
   catch (const ausroll::RunFailure &e)
   {
     if (root)
-      std::cerr << "ausroll: run failed: " << e.what() << std::endl;
+      std::cerr << "ausroll: run failed: " << concise(e.what()) << std::endl;
     return 3;
   }
   catch (const std::exception &e)
   {
-    std::cerr << "ausroll: internal error: " << e.what() << std::endl;
+    std::cerr << "ausroll: internal error: " << concise(e.what()) << std::endl;
     return 4;
   }
   return 0;
