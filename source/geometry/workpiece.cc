@@ -279,6 +279,19 @@ namespace ausroll::geometry
     refine_towards_point(parameters, triangulation);
   }
 
+  void require_dof_estimate(const double n_cells, const unsigned int degree, const unsigned int dim)
+  {
+    const double estimate = n_cells * std::pow(double(degree), double(dim)) * dim;
+    if (estimate > max_dofs)
+    {
+      std::ostringstream msg;
+      msg << "Model/Polynomial degree: " << n_cells << " cells of degree " << degree
+          << " give about " << estimate << " unknowns, more than ausroll accepts (" << max_dofs
+          << "); lower the degree or Geometry/Global refinements / Local refinements";
+      throw InputError(msg.str());
+    }
+  }
+
   template <int dim>
   void require_boundary_ids(const Triangulation<dim>        &triangulation,
                             const std::vector<unsigned int> &ids,

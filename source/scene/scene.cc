@@ -97,6 +97,8 @@ namespace ausroll::scene
       }
       else
         geometry::create_workpiece(parameters.geometry, triangulation);
+      geometry::require_dof_estimate(
+          triangulation.n_global_active_cells(), parameters.model.degree, dim);
       assembler = std::make_unique<mechanics::Assembler<dim>>(mapping,
                                                               fe,
                                                               parameters.model.quadrature_points,

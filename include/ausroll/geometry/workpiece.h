@@ -17,6 +17,15 @@ namespace ausroll::geometry
   constexpr double max_coarse_cells = 1e6;
   /** Most cells after `Global refinements` (estimated before refining). */
   constexpr double max_cells = 4e6;
+  /** Most degrees of freedom (estimated from the cells and the degree before distributing). */
+  constexpr double max_dofs = 2e7;
+
+  /**
+   * InputError naming `Model/Polynomial degree` and the refinements if @p n_cells cells of degree
+   * @p degree in @p dim dimensions give more than max_dofs unknowns (about n_cells p^dim dim).
+   */
+  void
+  require_dof_estimate(const double n_cells, const unsigned int degree, const unsigned int dim);
 
   /**
    * Create the workpiece described by @p parameters in @p triangulation (which must be empty):
