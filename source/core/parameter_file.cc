@@ -206,7 +206,10 @@ namespace ausroll
     try
     {
       std::istringstream in(text.text);
-      prm.parse_input(in, "input", "", /*skip_undefined=*/false);
+      prm.parse_input(in,
+                      text.origin.empty() ? std::string("input") : text.origin.front().file,
+                      "",
+                      /*skip_undefined=*/false);
     }
     catch (const ExceptionBase &e)
     {
