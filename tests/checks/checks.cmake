@@ -178,6 +178,9 @@ ausroll_add_resume_check(NAME checkpoint_contact_np2
 ausroll_add_resume_check(NAME checkpoint_predictor
   PRM ${CMAKE_CURRENT_BINARY_DIR}/block_slide_checkpoint.prm ABORT 7
   ARGS --set "Loading/Predictor=linear extrapolation")
+ausroll_add_resume_check(NAME checkpoint_predictor_np2
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/block_slide_checkpoint.prm ABORT 7 NP 2
+  ARGS --set "Loading/Predictor=linear extrapolation")
 
 # Restart and output safety (block slide, checkpoint after step 4 of 12): a resume with a changed
 # mesh or polynomial degree is refused naming the entries (it crashed); a legitimate change
