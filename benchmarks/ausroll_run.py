@@ -50,8 +50,9 @@ class Run:
 
 
 def run_variant(ausroll, base_prm, work, name, overrides, np=1, reuse=False, timeout=None):
-    """Write work/name.prm = base_prm with @p overrides (scripts/prm_variant.py syntax), run it
-    with its output in work/name (verbose log in work/name/run.log) and return a Run."""
+    """Run base_prm with @p overrides ("Section/Entry = value", given to ausroll as --set) with
+    its output in work/name (the command and the verbose log in work/name/run.log) and return a
+    Run."""
     out = os.path.join(work, name)
     os.makedirs(out, exist_ok=True)
     log_path = os.path.join(out, "run.log")
@@ -62,11 +63,11 @@ def run_variant(ausroll, base_prm, work, name, overrides, np=1, reuse=False, tim
         log = open(log_path).read()
         return Run(name, read_history(history), float(wall), float(cpu), parse_solves(log),
                    int(rc), log)
-    prm = os.path.join(work, f"{name}.prm")
-    subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "prm_variant.py"), base_prm, prm,
-                    f"Output/Directory = {out}", "Output/Write VTU = false",
-                    "Output/Verbosity = verbose"] + overrides, check=True)
-    command = [ausroll, prm]
+    # the overrides go on the command line (ausroll --set, checked like the file)
+    command = [ausroll, base_prm, "--overwrite"]
+    for o in [f"Output/Directory = {out}", "Output/Write VTU = false",
+              "Output/Verbosity = verbose"] + overrides:
+        command += ["--set", o]
     if np > 1:
         command = ["mpirun", "-np", str(np)] + command
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -81,7 +82,7 @@ def run_variant(ausroll, base_prm, work, name, overrides, np=1, reuse=False, tim
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     with open(log_path, "w") as f:
-        f.write(log)
+        f.write(" ".join(f"'{c}'" if " " in c else c for c in command) + "\n" + log)
     with open(meta, "w") as f:
         f.write(f"{wall} {cpu} {rc}\n")
     return Run(name, read_history(history) if rc != -9 else [], wall, cpu, parse_solves(log), rc,

@@ -141,14 +141,17 @@ def plot(results, rp, filename, title):
     import matplotlib.pyplot as plt
 
     steps = sorted({r[0] for r in results})
-    fig, axes = plt.subplots(3, 1, figsize=(7, 9), sharex=True)
+    times = {s: next(r[1] for r in results if r[0] == s) for s in steps}
+    fig, axes = plt.subplots(3, 1, figsize=(7.5, 9), sharex=True, constrained_layout=True)
     cmap = plt.get_cmap("viridis")
-    for i, s in enumerate(steps):
+    # every output step is a curve, coloured by its time (colour bar), not only the first and last
+    norm = matplotlib.colors.Normalize(vmin=min(times.values()),
+                                       vmax=max(max(times.values()), min(times.values()) + 1e-12))
+    for s in steps:
         rows = [r for r in results if r[0] == s]
-        c = cmap(i / max(len(steps) - 1, 1))
-        label = f"t = {rows[0][1]:.2f}" if i in (0, len(steps) - 1) else None
+        c = cmap(norm(times[s]))
         R = [r[2] for r in rows]
-        axes[0].plot(R, [1000 * r[4] for r in rows], color=c, label=label)
+        axes[0].plot(R, [1000 * r[4] for r in rows], color=c)
         axes[1].plot(R, [1000 * r[5] for r in rows], color=c)
         axes[2].plot(R, [r[6] for r in rows], color=c)
     for ax in axes:
@@ -158,9 +161,9 @@ def plot(results, rp, filename, title):
     axes[1].set_ylabel("tangential displ. u_t (um)\n(> 0: towards the tip)")
     axes[2].set_ylabel("contact pressure p_n (MPa)")
     axes[2].set_xlabel("reference radius R (mm); dotted: pitch circle")
-    axes[0].legend()
+    fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), ax=list(axes),
+                 label=f"pseudo-time t of the output ({len(steps)} outputs)")
     axes[0].set_title(title)
-    fig.tight_layout()
     fig.savefig(filename, dpi=110)
 
 

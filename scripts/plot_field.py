@@ -32,6 +32,17 @@ import matplotlib.pyplot as plt
 from matplotlib.collections import PolyCollection
 
 
+
+def field_unit(name):
+    """Unit of a VTU field of ausroll for the colour bar (the shipped scenes use mm, N, MPa)."""
+    if "stress" in name or name in ("contact_pressure", "contact_traction"):
+        return " (MPa)"
+    if name in ("displacement", "contact_gap") or name.startswith("displacement"):
+        return " (mm)"
+    if name == "equivalent_plastic_strain":
+        return " (-)"
+    return ""
+
 def resolve(path):
     """A .pvd resolves to its last data set."""
     if not path.endswith(".pvd"):
@@ -130,7 +141,9 @@ def main():
     ax.set_aspect("equal")
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
-    fig.colorbar(coll, ax=ax, fraction=0.046, pad=0.03, label=args.field + (f"[{args.component}]" if args.component is not None else ""))
+    fig.colorbar(coll, ax=ax, fraction=0.046, pad=0.03,
+                 label=args.field + (f"[{args.component}]" if args.component is not None else "")
+                 + field_unit(args.field))
     ax.set_title(args.title or os.path.basename(args.file))
     out = args.output or os.path.splitext(os.path.basename(args.file))[0] + f"_{args.field}.png"
     fig.savefig(out, dpi=150, bbox_inches="tight")

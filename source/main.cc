@@ -3,6 +3,7 @@
  * The ausroll executable: parse the command line and dispatch.
  */
 #include <ausroll/core/exceptions.h>
+#include <ausroll/core/parameter_file.h>
 #include <ausroll/io/parameter_documentation.h>
 #include <ausroll/scene/scene.h>
 #include <ausroll/scene/scene_parameters.h>
@@ -13,22 +14,95 @@
 
 #include <algorithm>
 #include <iostream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
   void print_usage(std::ostream &out)
   {
-    out << "Usage: ausroll FILE.prm              run the scene described by FILE.prm\n"
-           "       ausroll FILE.prm --resume     continue FILE.prm from its latest checkpoint\n"
+    out << "Usage: ausroll FILE.prm [OPTIONS]     run the scene described by FILE.prm\n"
            "       ausroll --print-parameters[=prm|markdown]\n"
            "                                     print every parameter with its default and\n"
            "                                     documentation (default format: prm)\n"
            "       ausroll --help                this text\n"
            "       ausroll --version             version\n"
+           "Options after FILE.prm:\n"
+           "  --resume                 continue FILE.prm from its latest checkpoint\n"
+           "  --overwrite              replace the results of an earlier run in Output/Directory\n"
+           "                           (same as --set \"Output/Overwrite=true\")\n"
+           "  --set \"Section/Entry=value\"\n"
+           "                           override one entry of FILE.prm (may be repeated; checked\n"
+           "                           like a line of the file), e.g.\n"
+           "                           --set \"Loading/Number of steps=40\"\n"
            "Run in parallel with: mpirun -np N ausroll FILE.prm\n"
            "Exit status: 0 success, 1 usage error, 2 input error, 3 run failure, 4 internal "
            "error.\n";
+  }
+
+  /**
+   * @p what on one line and without a deal.II developer block (file, function, violated
+   * condition, stack trace) that a wrapped deal.II exception brings along: only its "Additional
+   * information" is kept, after the text that wrapped it. At most 2000 characters (other
+   * messages: 4000).
+   */
+  std::string concise(std::string what)
+  {
+    if (what.find("Stacktrace:") == std::string::npos
+        && what.find("Additional information:") == std::string::npos)
+      return what.size() > 4000 ? what.substr(0, 4000) + " ..." : what;
+    const auto trace = what.find("Stacktrace:");
+    if (trace != std::string::npos)
+      what.erase(trace);
+    const auto info = what.find("Additional information:");
+    if (info != std::string::npos)
+    {
+      const auto        banner = what.find("-----");
+      const std::string prefix = banner < info ? what.substr(0, banner) : std::string();
+      what = prefix + what.substr(info + 23);
+    }
+    std::string        text, word;
+    std::istringstream words(what);
+    while (words >> word)
+      if (word.find_first_not_of('-') != std::string::npos)
+        text += (text.empty() ? "" : " ") + word;
+    if (text.size() > 2000)
+      text = text.substr(0, 2000) + " ...";
+    return text;
+  }
+
+  /** What the command line asks for. */
+  struct CommandLine
+  {
+    std::string                             file;
+    bool                                    resume = false;
+    std::vector<ausroll::ParameterOverride> overrides;
+  };
+
+  CommandLine parse_command_line(const int argc, char **argv)
+  {
+    CommandLine line;
+    line.file = argv[1];
+    for (int i = 2; i < argc; ++i)
+    {
+      const std::string arg = argv[i];
+      if (arg == "--resume")
+        line.resume = true;
+      else if (arg == "--overwrite")
+        line.overrides.push_back(ausroll::parse_override("Output/Overwrite=true"));
+      else if (arg == "--set")
+      {
+        if (i + 1 >= argc)
+          throw ausroll::UsageError("--set needs an argument \"Section/Entry=value\"");
+        line.overrides.push_back(ausroll::parse_override(argv[++i]));
+      }
+      else if (arg.rfind("--set=", 0) == 0)
+        line.overrides.push_back(ausroll::parse_override(arg.substr(6)));
+      else
+        throw ausroll::UsageError("unknown argument '" + arg + "'");
+    }
+    return line;
   }
 } // namespace
 
@@ -48,13 +122,8 @@ int main(int argc, char **argv)
 
   try
   {
-    const bool resume = argc == 3 && std::string(argv[2]) == "--resume";
-    if (argc != 2 && !resume)
-    {
-      if (root)
-        print_usage(std::cerr);
-      return 1;
-    }
+    if (argc < 2)
+      throw ausroll::UsageError("no parameter file given");
     const std::string arg = argv[1];
     if (arg == "--help" || arg == "-h")
     {
@@ -68,9 +137,14 @@ int main(int argc, char **argv)
         std::cout << "ausroll 0.1.0 (deal.II " << DEAL_II_PACKAGE_VERSION << ")\n";
       return 0;
     }
-    if (arg.rfind("--print-parameters", 0) == 0)
+    if (arg == "--print-parameters" || arg.rfind("--print-parameters=", 0) == 0)
     {
-      const std::string format = arg.size() > 19 && arg[18] == '=' ? arg.substr(19) : "prm";
+      const std::string format = arg.size() > 19 ? arg.substr(19) : "prm";
+      if (format != "prm" && format != "markdown")
+        throw ausroll::UsageError("--print-parameters: unknown format '" + format
+                                  + "' (prm or markdown)");
+      if (argc != 2)
+        throw ausroll::UsageError("unknown argument '" + std::string(argv[2]) + "'");
       if (root)
       {
         dealii::ParameterHandler prm;
@@ -80,31 +154,34 @@ int main(int argc, char **argv)
       return 0;
     }
     if (arg.rfind("-", 0) == 0)
+      throw ausroll::UsageError("unknown option '" + arg + "'");
+    const CommandLine line = parse_command_line(argc, argv);
+    ausroll::scene::run_scene(line.file, MPI_COMM_WORLD, line.resume, line.overrides);
+  }
+  catch (const ausroll::UsageError &e)
+  {
+    if (root)
     {
-      if (root)
-      {
-        std::cerr << "ausroll: unknown option '" << arg << "'\n";
-        print_usage(std::cerr);
-      }
-      return 1;
+      std::cerr << "ausroll: " << e.what() << "\n";
+      print_usage(std::cerr);
     }
-    ausroll::scene::run_scene(arg, MPI_COMM_WORLD, resume);
+    return 1;
   }
   catch (const ausroll::InputError &e)
   {
     if (root)
-      std::cerr << "ausroll: input error: " << e.what() << std::endl;
+      std::cerr << "ausroll: input error: " << concise(e.what()) << std::endl;
     return 2;
   }
   catch (const ausroll::RunFailure &e)
   {
     if (root)
-      std::cerr << "ausroll: run failed: " << e.what() << std::endl;
+      std::cerr << "ausroll: run failed: " << concise(e.what()) << std::endl;
     return 3;
   }
   catch (const std::exception &e)
   {
-    std::cerr << "ausroll: internal error: " << e.what() << std::endl;
+    std::cerr << "ausroll: internal error: " << concise(e.what()) << std::endl;
     return 4;
   }
   return 0;

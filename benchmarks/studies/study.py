@@ -46,7 +46,7 @@ def run(args, base, name, overrides):
         if f.endswith(".msh"):
             shutil.copy(os.path.join(prm_dir, f), args.work)
     start = time.time()
-    result = subprocess.run([args.ausroll, prm], capture_output=True, text=True)
+    result = subprocess.run([args.ausroll, prm, "--overwrite"], capture_output=True, text=True)
     seconds = time.time() - start
     with open(os.path.join(out, "run.log"), "w") as log:
         log.write(result.stdout + result.stderr)

@@ -59,7 +59,7 @@ def run_variant(ausroll, work, base, name, overrides, reuse=False, timeout=None)
     before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime
     start = time.time()
     try:
-        result = subprocess.run([ausroll, prm], capture_output=True, text=True, timeout=timeout)
+        result = subprocess.run([ausroll, prm, "--overwrite"], capture_output=True, text=True, timeout=timeout)
         log_text, ok = result.stdout + result.stderr, result.returncode == 0
         if not ok:
             print(f"  {name}: ausroll exit {result.returncode}: {result.stderr.strip()[-300:]}")

@@ -748,10 +748,11 @@ namespace ausroll::contact
   {
     for (unsigned int k = 0; k < dies.size(); ++k)
     {
-      const std::string path = "Contact/Die " + std::to_string(k) + " (" + dies[k]->name + ")";
-      unsigned int      n_candidates = 0;
-      double            deepest = infinity, nearest = infinity;
-      Point<2>          deepest_node;
+      const std::string   path = "Contact/Die " + std::to_string(k) + " (" + dies[k]->name + ")";
+      unsigned int        n_candidates = 0;
+      double              deepest = infinity, nearest = infinity;
+      Point<2>            deepest_node;
+      std::vector<double> nearest_at(times.size(), infinity); // over the nodes, per time
       for (const Node &n : nodes)
         if (n.owned && std::find(n.dies.begin(), n.dies.end(), k) != n.dies.end())
         {
@@ -763,11 +764,12 @@ namespace ausroll::contact
             deepest = p0.gap;
             deepest_node = to_2d(n.X);
           }
-          for (const double t : times)
+          for (unsigned int i = 0; i < times.size(); ++i)
           {
             const Projection p
-                = dies[k]->die_surface().project(dies[k]->pose(t).to_local(to_2d(n.X)));
+                = dies[k]->die_surface().project(dies[k]->pose(times[i]).to_local(to_2d(n.X)));
             nearest = std::min(nearest, p.gap);
+            nearest_at[i] = std::min(nearest_at[i], p.gap);
           }
         }
       if (Utilities::MPI::sum(n_candidates, comm) == 0)
@@ -786,6 +788,18 @@ namespace ausroll::contact
         std::ostringstream msg;
         msg << path << " never comes within " << 0.25 * workpiece_size
             << " mm of the workpiece during the run; check its position and Motion";
+        throw InputError(msg.str());
+      }
+      // Near at the start but only moving away: it never touches either.
+      Utilities::MPI::min(nearest_at, comm, nearest_at);
+      const double start = nearest_at.front(), touch = 1e-6 * workpiece_size;
+      if (start > touch && Utilities::MPI::min(nearest, comm) >= start - touch
+          && nearest_at.back() > start + touch)
+      {
+        std::ostringstream msg;
+        msg << path << " never comes within " << start
+            << " mm of the workpiece during the run: it starts that far away and moves away (to "
+            << nearest_at.back() << " mm); check the sign of its Motion";
         throw InputError(msg.str());
       }
       (void)deepest_node;

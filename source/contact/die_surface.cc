@@ -711,7 +711,10 @@ namespace ausroll::contact
     using geometry::FlankSide;
     const geometry::ToothGeometry &tooth = gear.tooth_geometry();
     const unsigned int             z = gear.n_teeth();
-    require(n_teeth <= z, die_entry, "a gear sector cannot have more teeth than the gear");
+    if (n_teeth > z)
+      throw EntryError("Teeth in sector",
+                       std::to_string(n_teeth) + " is more than the gear's " + std::to_string(z)
+                           + " teeth");
     const bool     full = (n_teeth == 0 || n_teeth == z);
     const unsigned n = full ? z : n_teeth;
     const double   rb = gear.base_radius();
@@ -732,7 +735,8 @@ namespace ausroll::contact
     // tangent point Q on the flank lies on that base tangent at r_b u_Q = rho_t +
     // sqrt(r_c^2 - r_b^2) from the tangency point; the tangent point on the outside circle lies
     // on the ray through c.
-    require(tip_round >= 0.0, die_entry, "the tip round radius must not be negative");
+    if (tip_round < 0.0)
+      throw EntryError("Tip radius", "the tip round radius must not be negative");
     double   u_tip = gear.roll_angle_at(rt);
     double   tip_angle = tooth.tip_half_angle;
     Point<2> round_center;
@@ -740,9 +744,11 @@ namespace ausroll::contact
     if (tip_round > 0.0)
     {
       const double r_c = rt - tip_round;
-      require(r_c > rb, die_entry, "the tip round must end above the base circle");
+      if (!(r_c > rb))
+        throw EntryError("Tip radius", "the tip round must end above the base circle");
       tip_angle = gear.half_thickness_angle(r_c) - tip_round / rb;
-      require(tip_angle > 0.0, die_entry, "the tip round is too large: no tip land remains");
+      if (!(tip_angle > 0.0))
+        throw EntryError("Tip radius", "the tip round is too large: no tip land remains");
       u_tip = (tip_round + std::sqrt(r_c * r_c - rb * rb)) / rb;
       require(u_tip > u_low, die_entry, "the tip round reaches below the involute flank");
       round_center = Point<2>(r_c * unit(tip_angle));

@@ -6,8 +6,10 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/numbers.h>
 
+#include <cmath>
 #include <limits>
 #include <map>
+#include <sstream>
 
 namespace ausroll::contact
 {
@@ -21,22 +23,39 @@ namespace ausroll::contact
     TimeFunction
     time_function(const std::string &expression, const std::string &entry, const double scale = 1.)
     {
+      require_expression_length(expression, entry);
       auto parser = std::make_shared<FunctionParser<1>>(1);
       try
       {
+        // deal.II parses at the first evaluation
         parser->initialize("x,t", expression, {{"pi", numbers::PI}}, true);
         parser->set_time(0.);
         parser->value(Point<1>());
       }
       catch (...)
       {
-        throw InputError(entry + ": cannot parse '" + expression + "' (variable: t)");
+        throw InputError(entry + ": cannot parse '" + abbreviate(expression) + "' (variable: t)");
       }
-      return [parser, scale](const double t)
+      // A value that is not finite (t/0, sqrt(-1-t), an overflow) is an input error naming the
+      // entry wherever it is met: at t = 0 here, at the die check's times before the run.
+      const TimeFunction f = [parser, scale, expression, entry](const double t)
       {
         parser->set_time(t);
-        return scale * parser->value(Point<1>());
+        const double value = scale * parser->value(Point<1>());
+        if (!std::isfinite(value))
+        {
+          std::ostringstream msg;
+          msg << entry << ": '" << abbreviate(expression) << "' is not finite ("
+              << (std::isnan(value) ? "nan"
+                  : value > 0       ? "inf"
+                                    : "-inf")
+              << ") at t = " << t;
+          throw InputError(msg.str());
+        }
+        return value;
       };
+      f(0.);
+      return f;
     }
 
     std::unique_ptr<DieSurface> make_surface(const DieParameters &p, const std::string &path)
@@ -108,12 +127,15 @@ namespace ausroll::contact
             return std::make_unique<DieSurface>(DieSurface::involute_gear(
                 gear, p.tooth_axis_angle * degree, p.sector_teeth, p.tip_radius));
           }
+          catch (const EntryError &e)
+          {
+            // the gear and the die-surface factory name the entry that failed
+            throw InputError(path + e.entry() + ": " + e.what_is_wrong());
+          }
           catch (const std::exception &e)
           {
-            const std::string what = e.what();
-            if (what.find("tip round") != std::string::npos)
-              throw InputError(path + "Tip radius: " + what);
-            throw InputError(path + "Number of teeth: invalid gear (" + what + ")");
+            throw InputError(path + "Shape = involute gear: invalid gear (" + std::string(e.what())
+                             + ")");
           }
         }
       }

@@ -1,6 +1,7 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/core/parse_utilities.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -22,13 +23,32 @@ namespace ausroll
     return pieces;
   }
 
+  std::string abbreviate(const std::string &text)
+  {
+    if (text.size() <= 80)
+      return text;
+    return text.substr(0, 60) + " ... (" + std::to_string(text.size()) + " characters)";
+  }
+
+  void require_expression_length(const std::string &expression, const std::string &entry)
+  {
+    constexpr std::size_t max_length = 20000; // muparser's MaxLenExpression
+    if (expression.size() >= max_length)
+      throw InputError(entry + ": expression too long (" + std::to_string(expression.size())
+                       + " characters; the expression parser accepts fewer than "
+                       + std::to_string(max_length) + "): '" + abbreviate(expression) + "'");
+  }
+
   double parse_double(const std::string &text, const std::string &entry)
   {
     const char  *begin = text.c_str();
     char        *end = nullptr;
     const double value = std::strtod(begin, &end);
     if (end == begin || std::string(end).find_first_not_of(" \t") != std::string::npos)
-      throw InputError(entry + ": '" + text + "' is not a number");
+      throw InputError(entry + ": '" + abbreviate(text) + "' is not a number");
+    if (!std::isfinite(value) || std::abs(value) > 1e30)
+      throw InputError(entry + ": '" + abbreviate(text)
+                       + "' is out of range (magnitude above 1e30, inf or nan)");
     return value;
   }
 

@@ -236,6 +236,10 @@ namespace ausroll::geometry
                  ? InvoluteGear::from_diametral_pitch(n_teeth, diametral_pitch, alpha, p)
                  : InvoluteGear(n_teeth, module, alpha, p);
     }
+    catch (const EntryError &e)
+    {
+      throw InputError("Geometry/Gear tooth/" + e.entry() + ": " + e.what_is_wrong());
+    }
     catch (const InputError &e)
     {
       throw InputError("Geometry/Gear tooth: " + std::string(e.what()));

@@ -13,6 +13,16 @@ namespace ausroll::geometry
 {
   namespace
   {
+    /** EntryError naming the gear entry (Number of teeth, Pressure angle, ...) unless @p ok. */
+    void require_entry(const bool ok, const char *entry, const std::string &what)
+    {
+      if (!ok)
+        throw EntryError(entry, what);
+    }
+  } // namespace
+
+  namespace
+  {
     using dealii::Point;
     using dealii::Tensor;
 
@@ -96,19 +106,19 @@ namespace ausroll::geometry
       , s_p(proportions.pitch_tooth_thickness.value_or(0.5 * M_PI * module))
       , rho_f(proportions.root_fillet_radius)
   {
-    const std::string where = "Involute gear";
-    require(z >= 3, where, "the number of teeth must be at least 3");
-    require(m > 0.0 && std::isfinite(m), where, "the module must be positive");
-    require(alpha > 0.0 && alpha < 0.5 * M_PI,
-            where,
-            "the pressure angle must lie strictly between 0 and 90 degrees");
-    require(add > 0.0, where, "the addendum must be positive");
-    require(ded > 0.0, where, "the dedendum must be positive");
-    require(root_radius() > 0.0, where, "the dedendum is larger than the pitch radius");
-    require(s_p > 0.0 && s_p < circular_pitch(),
-            where,
-            "the pitch tooth thickness must lie between 0 and the circular pitch");
-    require(rho_f >= 0.0, where, "the root fillet radius must not be negative");
+    require_entry(z >= 3, "Number of teeth", "the number of teeth must be at least 3");
+    require_entry(m > 0.0 && std::isfinite(m), "Module", "the module must be positive");
+    require_entry(alpha > 0.0 && alpha < 0.5 * M_PI,
+                  "Pressure angle",
+                  "the pressure angle must lie strictly between 0 and 90 degrees");
+    require_entry(add > 0.0, "Addendum", "the addendum must be positive");
+    require_entry(ded > 0.0, "Dedendum", "the dedendum must be positive");
+    require_entry(root_radius() > 0.0, "Dedendum", "the dedendum is larger than the pitch radius");
+    require_entry(s_p > 0.0 && s_p < circular_pitch(),
+                  "Tooth thickness",
+                  "the pitch tooth thickness must lie between 0 and the circular pitch");
+    require_entry(
+        rho_f >= 0.0, "Root fillet radius", "the root fillet radius must not be negative");
     compute_tooth_geometry();
   }
 
@@ -117,7 +127,7 @@ namespace ausroll::geometry
                                                   const double            pressure_angle,
                                                   const ToothProportions &proportions)
   {
-    require(diametral_pitch > 0.0, "Involute gear", "the diametral pitch must be positive");
+    require_entry(diametral_pitch > 0.0, "Diametral pitch", "the diametral pitch must be positive");
     return InvoluteGear(n_teeth, mm_per_inch / diametral_pitch, pressure_angle, proportions);
   }
 
@@ -256,17 +266,17 @@ namespace ausroll::geometry
 
   void InvoluteGear::compute_tooth_geometry()
   {
-    const std::string where = "Involute gear";
-    const double      rb = base_radius(), rr = root_radius(), rt = tip_radius();
+    const double rb = base_radius(), rr = root_radius(), rt = tip_radius();
 
     tooth.base_half_angle = half_thickness_angle(rb);
     tooth.tip_half_angle = half_thickness_angle(rt);
-    require(tooth.tip_half_angle > 0.0,
-            where,
-            "the tooth is pointed below the tip circle (reduce the addendum or thicken the tooth)");
-    require(half_thickness_angle(rr) < M_PI / z,
-            where,
-            "the teeth overlap at the root circle (tooth thickness too large)");
+    require_entry(
+        tooth.tip_half_angle > 0.0,
+        "Addendum",
+        "the tooth is pointed below the tip circle (reduce the addendum or thicken the tooth)");
+    require_entry(half_thickness_angle(rr) < M_PI / z,
+                  "Tooth thickness",
+                  "the teeth overlap at the root circle (tooth thickness too large)");
 
     if (rho_f == 0.0)
     {
@@ -285,10 +295,11 @@ namespace ausroll::geometry
             = flank_point(r, FlankSide::positive) + rho_f * flank_normal(r, FlankSide::positive);
         return c.norm() - (rr + rho_f);
       };
-      require(f(rt) > 0.0,
-              where,
-              "the root fillet radius is too large: the fillet does not meet the flank below the "
-              "tip circle");
+      require_entry(
+          f(rt) > 0.0,
+          "Root fillet radius",
+          "the root fillet radius is too large: the fillet does not meet the flank below the "
+          "tip circle");
       double lo = rr, hi = rt;
       for (unsigned int it = 0; it < 200 && hi - lo > 1e-15 * rt; ++it)
       {
@@ -300,9 +311,9 @@ namespace ausroll::geometry
       tooth.fillet_center = flank_point(r_star, FlankSide::positive)
                             + rho_f * flank_normal(r_star, FlankSide::positive);
       tooth.root_land_angle = std::atan2(tooth.fillet_center[1], tooth.fillet_center[0]);
-      require(tooth.root_land_angle <= M_PI / z + 1e-12,
-              where,
-              "the root fillet radius is too large: fillets of neighbouring teeth overlap");
+      require_entry(tooth.root_land_angle <= M_PI / z + 1e-12,
+                    "Root fillet radius",
+                    "the root fillet radius is too large: fillets of neighbouring teeth overlap");
       tooth.root_land_angle = std::min(tooth.root_land_angle, M_PI / z);
     }
     tooth.has_radial_flank = tooth.flank_start_radius < rb;

@@ -9,8 +9,10 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria_description.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 
 namespace ausroll::geometry
 {
@@ -193,6 +195,35 @@ namespace ausroll::geometry
                         Triangulation<dim>       &triangulation,
                         const bool                refine)
   {
+    // Coarse cells from the entries, bounded before anything is allocated.
+    {
+      double      n = 0.;
+      std::string entries;
+      switch (parameters.type)
+      {
+        case WorkpieceType::quarter_ring:
+          n = double(parameters.radial_cells) * parameters.angular_cells;
+          entries = "Geometry/Quarter ring/Radial cells x Angular cells";
+          break;
+        case WorkpieceType::ring:
+          n = double(parameters.ring_cells_around) * parameters.ring_cells_radially;
+          entries = "Geometry/Ring/Cells around x Cells radially";
+          break;
+        case WorkpieceType::rectangle:
+          n = 1.;
+          for (const unsigned int c : parameters.rectangle_cells)
+            n *= c;
+          entries = "Geometry/Rectangle/Cells";
+          break;
+        default:
+          break;
+      }
+      if (n > max_coarse_cells)
+        throw InputError(entries + ": " + std::to_string(static_cast<long long>(n))
+                         + " coarse cells is more than ausroll accepts ("
+                         + std::to_string(static_cast<long long>(max_coarse_cells))
+                         + "); use fewer coarse cells and Geometry/Global refinements");
+    }
     Triangulation<dim> coarse;
     if (parameters.type == WorkpieceType::mesh_file)
       mesh_file(parameters, coarse);
@@ -231,12 +262,77 @@ namespace ausroll::geometry
         triangulation.set_manifold(1, PolarManifold<2>(parameters.ring_center));
       }
     }
+    const double estimate
+        = double(triangulation.n_cells()) * std::pow(4., parameters.global_refinements);
+    if (estimate > max_cells)
+    {
+      std::ostringstream msg;
+      msg << "Geometry/Global refinements: " << parameters.global_refinements
+          << " refinements of the " << triangulation.n_cells() << " coarse cells give " << estimate
+          << " cells, more than ausroll accepts (" << max_cells
+          << "); use fewer refinements or coarse cells";
+      throw InputError(msg.str());
+    }
     if (!refine)
       return;
     triangulation.refine_global(parameters.global_refinements);
     refine_towards_point(parameters, triangulation);
   }
 
+  void require_dof_estimate(const double n_cells, const unsigned int degree, const unsigned int dim)
+  {
+    const double estimate = n_cells * std::pow(double(degree), double(dim)) * dim;
+    if (estimate > max_dofs)
+    {
+      std::ostringstream msg;
+      msg << "Model/Polynomial degree: " << n_cells << " cells of degree " << degree
+          << " give about " << estimate << " unknowns, more than ausroll accepts (" << max_dofs
+          << "); lower the degree or Geometry/Global refinements / Local refinements";
+      throw InputError(msg.str());
+    }
+  }
+
+  template <int dim>
+  void require_boundary_ids(const Triangulation<dim>        &triangulation,
+                            const std::vector<unsigned int> &ids,
+                            const std::string               &entry)
+  {
+    const std::vector<types::boundary_id> present = triangulation.get_boundary_ids();
+    for (const unsigned int id : ids)
+      if (std::find(present.begin(), present.end(), id) == present.end())
+      {
+        std::string list;
+        for (const auto p : present)
+          list += (list.empty() ? "" : ", ") + std::to_string(p);
+        throw InputError(entry + ": the workpiece has no boundary with id " + std::to_string(id)
+                         + " (its boundary ids: " + list + "; see Geometry/Type)");
+      }
+  }
+
+  template <int dim>
+  void require_off_axis(const Triangulation<dim> &triangulation, const std::string &entry)
+  {
+    const auto   box = GridTools::compute_bounding_box(triangulation);
+    const double x_min = box.get_boundary_points().first[0];
+    const double size = box.get_boundary_points().first.distance(box.get_boundary_points().second);
+    if (x_min < -1e-9 * size)
+    {
+      std::ostringstream msg;
+      msg << entry << ": the workpiece reaches x = " << x_min
+          << " mm, but x is the radius of an axisymmetric body (the axis is x = 0): move the "
+             "workpiece (Geometry) to x >= 0";
+      throw InputError(msg.str());
+    }
+  }
+
+  template void require_boundary_ids<2>(const Triangulation<2> &,
+                                        const std::vector<unsigned int> &,
+                                        const std::string &);
+  template void require_boundary_ids<3>(const Triangulation<3> &,
+                                        const std::vector<unsigned int> &,
+                                        const std::string &);
+  template void require_off_axis<2>(const Triangulation<2> &, const std::string &);
+  template void require_off_axis<3>(const Triangulation<3> &, const std::string &);
   template void create_workpiece<2>(const GeometryParameters &, Triangulation<2> &, const bool);
   template void create_workpiece<3>(const GeometryParameters &, Triangulation<3> &, const bool);
 } // namespace ausroll::geometry

@@ -104,6 +104,84 @@ namespace ausroll::io
     return it->second[0];
   }
 
+  void CheckpointMetadata::set_parameters(const std::map<std::string, std::string> &entries)
+  {
+    unsigned int k = 0;
+    for (const auto &[entry, value] : entries)
+    {
+      std::ostringstream key;
+      key << "parameter_" << std::setw(4) << std::setfill('0') << k++;
+      strings[key.str()] = entry + '\t' + value;
+    }
+  }
+
+  std::map<std::string, std::string> CheckpointMetadata::parameters() const
+  {
+    std::map<std::string, std::string> entries;
+    for (const auto &[key, text] : strings)
+      if (key.rfind("parameter_", 0) == 0)
+      {
+        const auto tab = text.find('\t');
+        entries[text.substr(0, tab)] = tab == std::string::npos ? "" : text.substr(tab + 1);
+      }
+    return entries;
+  }
+
+  namespace
+  {
+    /** Entries whose change makes the checkpoint's mesh, DoFs or material points meaningless. */
+    bool fixes_discretisation(const std::string &entry)
+    {
+      for (const char *prefix : {"Geometry/", "Model/", "Material/", "Adaptivity/"})
+        if (entry.rfind(prefix, 0) == 0)
+          return true;
+      if (entry == "Contact/Number of dies")
+        return true;
+      return entry.rfind("Contact/Die ", 0) == 0 && entry.size() > 21
+             && entry.compare(entry.size() - 21, 21, "Candidate boundaries") == 0;
+    }
+
+    /** Entries that do not change the computed results. */
+    bool ignored_on_resume(const std::string &entry)
+    {
+      return entry == "Output/Overwrite" || entry == "Checkpoint/Abort after step";
+    }
+  } // namespace
+
+  std::vector<std::string> compare_resume_parameters(const CheckpointMetadata                 &meta,
+                                                     const std::map<std::string, std::string> &now,
+                                                     const std::string &directory)
+  {
+    const std::map<std::string, std::string> then = meta.parameters();
+    std::vector<std::string>                 warnings;
+    if (then.empty())
+    {
+      warnings.push_back("the checkpoint in " + directory
+                         + " stores no parameters: cannot check that FILE.prm is unchanged");
+      return warnings;
+    }
+    std::string refused;
+    for (const auto &[entry, value] : now)
+    {
+      const auto        it = then.find(entry);
+      const std::string old = it == then.end() ? "(not stored)" : it->second;
+      if (old == value || ignored_on_resume(entry))
+        continue;
+      const std::string line = entry + " (checkpoint: '" + old + "', now: '" + value + "')";
+      if (fixes_discretisation(entry))
+        refused += "\n  " + line;
+      else
+        warnings.push_back("--resume: " + line + " changed since the checkpoint was written");
+    }
+    if (!refused.empty())
+      throw InputError("--resume: entries that fix the mesh, the discretisation or the material "
+                       "differ from those of the checkpoint in "
+                       + directory + ":" + refused
+                       + "\nResume with the values of the checkpoint, or start a new run "
+                         "(--overwrite).");
+    return warnings;
+  }
+
   CheckpointDirectory::CheckpointDirectory(const std::string &output_directory, const MPI_Comm comm)
       : base(output_directory + "/checkpoint")
       , comm(comm)

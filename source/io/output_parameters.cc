@@ -18,6 +18,13 @@ namespace ausroll::io
                       "1",
                       Patterns::Integer(0),
                       "Write VTU output every this many load steps (0: only the last step).");
+    prm.declare_entry("Overwrite",
+                      "false",
+                      Patterns::Bool(),
+                      "A new run into a Directory that holds results of an earlier run "
+                      "(history.csv, solution.pvd, numbered outputs, checkpoint) is refused unless "
+                      "this is true or 'ausroll FILE.prm --overwrite' is used; then those earlier "
+                      "results are deleted (other files are left alone).");
     prm.declare_entry(
         "Write VTU", "true", Patterns::Bool(), "Write VTU/PVTU files and solution.pvd.");
     prm.declare_entry("Deformed mesh",
@@ -38,6 +45,7 @@ namespace ausroll::io
     prm.enter_subsection("Output");
     directory = prm.get("Directory");
     interval = prm.get_integer("Interval");
+    overwrite = prm.get_bool("Overwrite");
     write_vtu = prm.get_bool("Write VTU");
     deformed_mesh = prm.get_bool("Deformed mesh");
     const std::string v = prm.get("Verbosity");

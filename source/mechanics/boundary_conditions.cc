@@ -6,7 +6,9 @@
 #include <deal.II/fe/fe_values_extractors.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <cmath>
 #include <map>
+#include <sstream>
 
 namespace ausroll::mechanics
 {
@@ -131,6 +133,8 @@ namespace ausroll::mechanics
       }
       e.mask = ComponentMask(mask);
       e.function = std::make_unique<FunctionParser<dim>>(dim);
+      for (const std::string &expression : expressions)
+        require_expression_length(expression, condition_name(i) + "/Value");
       try
       {
         e.function->initialize(variables, expressions, constants, true);
@@ -141,10 +145,55 @@ namespace ausroll::mechanics
       }
       catch (...)
       {
-        throw InputError(condition_name(i) + "/Value: cannot parse '" + c.value
+        throw InputError(condition_name(i) + "/Value: cannot parse '" + abbreviate(c.value)
                          + "' (variables: " + variables + ", pi)");
       }
       entries.push_back(std::move(e));
+    }
+  }
+
+  template <int dim>
+  void BoundaryConditions<dim>::check_values(const Triangulation<dim>  &triangulation,
+                                             const std::vector<double> &times) const
+  {
+    for (unsigned int i = 0; i < entries.size(); ++i)
+    {
+      const Entry            &e = entries[i];
+      std::vector<Point<dim>> points;
+      // vertices of the coarse mesh: the same on every MPI rank
+      for (const auto &cell : triangulation.cell_iterators_on_level(0))
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == e.condition.id)
+            for (const auto v : cell->face(f)->vertex_indices())
+              points.push_back(cell->face(f)->vertex(v));
+      if (points.size() > 64) // a bounded sample of the boundary
+      {
+        std::vector<Point<dim>> sample;
+        for (unsigned int k = 0; k < 64; ++k)
+          sample.push_back(points[k * points.size() / 64]);
+        points.swap(sample);
+      }
+      Vector<double> v(dim);
+      for (const double t : times)
+      {
+        e.function->set_time(t);
+        for (const Point<dim> &x : points)
+        {
+          e.function->vector_value(x, v);
+          for (unsigned int d = 0; d < dim; ++d)
+            if (!std::isfinite(v[d]))
+            {
+              std::ostringstream msg;
+              msg << condition_name(i) << "/Value: '" << abbreviate(e.condition.value)
+                  << "' is not finite ("
+                  << (std::isnan(v[d]) ? "nan"
+                      : v[d] > 0       ? "inf"
+                                       : "-inf")
+                  << ") at t = " << t << ", x = (" << x << ")";
+              throw InputError(msg.str());
+            }
+        }
+      }
     }
   }
 

@@ -3,6 +3,7 @@
 #include <ausroll/core/parse_utilities.h>
 #include <ausroll/geometry/workpiece.h>
 #include <ausroll/io/checkpoint.h>
+#include <ausroll/io/output_directory.h>
 #include <ausroll/scene/scene.h>
 
 #include <deal.II/base/mpi.h>
@@ -78,17 +79,26 @@ namespace ausroll::scene
     // the timer is destroyed while no exception is in flight (it would print an MPI warning).
     try
     {
-      TimerOutput::Scope scope(*timer, "setup");
-      const std::string &dir = parameters.output.directory;
+      TimerOutput::Scope     scope(*timer, "setup");
+      const std::string     &dir = parameters.output.directory;
+      io::CheckpointMetadata meta;
       if (resuming)
       {
-        // The coarse mesh, then the refined, partitioned mesh of the checkpoint.
+        // The coarse mesh, then the refined, partitioned mesh of the checkpoint, unless the
+        // entries that made that mesh were changed.
         geometry::create_workpiece(parameters.geometry, triangulation, /*refine=*/false);
         checkpoint_directory = io::CheckpointDirectory(dir, comm).latest();
+        meta.read(checkpoint_directory + "/metadata.txt");
+        for (const std::string &warning :
+             io::compare_resume_parameters(meta, parameters.entries, checkpoint_directory))
+          if (rank == 0)
+            std::cerr << "ausroll: warning: " << warning << std::endl;
         triangulation.load(checkpoint_directory + "/mesh");
       }
       else
         geometry::create_workpiece(parameters.geometry, triangulation);
+      geometry::require_dof_estimate(
+          triangulation.n_global_active_cells(), parameters.model.degree, dim);
       assembler = std::make_unique<mechanics::Assembler<dim>>(mapping,
                                                               fe,
                                                               parameters.model.quadrature_points,
@@ -111,7 +121,11 @@ namespace ausroll::scene
         // Same order as in write_checkpoint(): solution first, then the material points.
         parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector> transfer(
             dof_handler);
-        transfer.deserialize(solution);
+        // with the converged solution before it (the predictor's), if the checkpoint has it
+        std::vector<TrilinosWrappers::MPI::Vector *> vectors{&solution};
+        if (meta.values.count("previous_solution") > 0)
+          vectors.push_back(&previous_start);
+        transfer.deserialize(vectors);
         solution_ghosted = solution;
         step_start = solution;
         point_transfer->prepare();
@@ -119,16 +133,12 @@ namespace ausroll::scene
       }
       setup_postprocessing();
 
-      // Output directory and files.
-      int created = 1;
-      if (rank == 0)
+      if (!resuming)
       {
-        std::error_code ec;
-        std::filesystem::create_directories(dir, ec);
-        created = !ec && std::filesystem::is_directory(dir);
+        // Input errors found here leave no output directory behind.
+        check_setup();
+        io::prepare_output_directory(dir, parameters.output.overwrite, comm);
       }
-      if (Utilities::MPI::broadcast(comm, created, 0) == 0)
-        throw InputError("Output/Directory: cannot create '" + dir + "'");
       writer = std::make_unique<io::SolutionWriter<dim>>(dir, comm);
     }
     catch (...)
@@ -147,7 +157,11 @@ namespace ausroll::scene
 
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector> transfer(
         dof_handler);
-    transfer.prepare_for_serialization(solution_ghosted);
+    // the converged solution before this one too: the predictor of the next step needs it
+    TrilinosWrappers::MPI::Vector previous_ghosted(owned_dofs, relevant_dofs, comm);
+    previous_ghosted = previous_start;
+    transfer.prepare_for_serialization(
+        std::vector<const TrilinosWrappers::MPI::Vector *>{&solution_ghosted, &previous_ghosted});
     point_transfer->prepare();
     triangulation.save(dir + "/mesh");
 
@@ -155,6 +169,9 @@ namespace ausroll::scene
     meta.values["time"] = {time};
     meta.values["step"] = {double(step_number)};
     meta.values["dt"] = {dt};
+    meta.values["last_step_size"] = {last_step_size};
+    meta.values["previous_solution"] = {1.};
+    meta.set_parameters(parameters.entries);
     meta.values["output_counter"] = {double(output_counter)};
     meta.values["last_output_step"] = {double(last_output_step)};
     meta.values["largest_reference_force"] = {largest_reference_force};
@@ -184,6 +201,8 @@ namespace ausroll::scene
     output_counter = static_cast<unsigned int>(meta.get("output_counter"));
     last_output_step = static_cast<int>(meta.get("last_output_step"));
     largest_reference_force = meta.get("largest_reference_force");
+    if (meta.values.count("last_step_size") > 0)
+      last_step_size = meta.get("last_step_size");
     contact.set_time(time);
     contact.update_geometry(solution_ghosted, false);
     contact.unpack_state(meta.values["contact"]);
@@ -509,16 +528,41 @@ namespace ausroll::scene
   }
 
   template <int dim>
-  void Scene<dim>::remove_numbered_outputs() const
+  void Scene<dim>::check_setup()
   {
-    if (Utilities::MPI::this_mpi_process(comm) != 0)
-      return;
-    const std::regex numbered(
-        R"((solution_[0-9]+(\.[0-9]+)?\.(vtu|pvtu)|(contact|profile)_[0-9]{4}\.csv|probe_.+_[0-9]{4}\.csv))");
-    std::error_code ec;
-    for (const auto &entry : std::filesystem::directory_iterator(parameters.output.directory, ec))
-      if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), numbered))
-        std::filesystem::remove(entry.path(), ec);
+    // Every boundary-id entry against the ids the mesh has.
+    const auto &conditions = parameters.boundary_conditions.conditions;
+    for (unsigned int i = 0; i < conditions.size(); ++i)
+      geometry::require_boundary_ids(triangulation,
+                                     {conditions[i].id},
+                                     "Boundary conditions/Condition " + std::to_string(i)
+                                         + "/Boundary id");
+    for (unsigned int k = 0; k < parameters.contact.dies.size(); ++k)
+      geometry::require_boundary_ids(triangulation,
+                                     parameters.contact.dies[k].candidate_boundaries,
+                                     "Contact/Die " + std::to_string(k) + "/Candidate boundaries");
+    geometry::require_boundary_ids(triangulation,
+                                   parse_unsigned_list(parameters.postprocess.reaction_boundaries,
+                                                       "Postprocess/Reaction boundaries"),
+                                   "Postprocess/Reaction boundaries");
+    geometry::require_boundary_ids(triangulation,
+                                   parameters.postprocess.boundary_profile.boundary_ids,
+                                   "Postprocess/Boundary profile/Boundary ids");
+    if (parameters.model.planar_model == mechanics::PlanarModel::axisymmetric)
+      geometry::require_off_axis(triangulation, "Model/Planar model = axisymmetric");
+
+    // Loads and dies at a bounded number of times (all step times for up to 256 steps): the
+    // check costs the same for any Loading/Number of steps.
+    const solver::LoadingParameters &loading = parameters.loading;
+    const unsigned int               n_samples = std::min(loading.number_of_steps, 256u);
+    std::vector<double>              times;
+    for (unsigned int k = 0; k <= n_samples; ++k)
+      times.push_back(loading.end_time * k / n_samples);
+    boundary_conditions.check_values(triangulation, times);
+    const auto box = GridTools::compute_bounding_box(triangulation);
+    if (contact.active())
+      contact.check_dies(
+          times, box.get_boundary_points().first.distance(box.get_boundary_points().second));
   }
 
   template <int dim>
@@ -852,19 +896,6 @@ namespace ausroll::scene
       dt = restore_checkpoint_state();
     else
     {
-      // Dies that cannot be right (no candidates, workpiece inside, never near): stop now.
-      if (contact.active())
-      {
-        std::vector<double> times;
-        for (unsigned int k = 0; k <= loading.number_of_steps; ++k)
-          times.push_back(k * nominal_dt);
-        const auto box = GridTools::compute_bounding_box(triangulation);
-        contact.check_dies(
-            times, box.get_boundary_points().first.distance(box.get_boundary_points().second));
-      }
-      // A new run in a directory used before: numbered files of the earlier run would mix with
-      // this run's (history.csv and solution.pvd are rewritten anyway).
-      remove_numbered_outputs();
       // Initial (undeformed) state.
       history = std::make_unique<io::History>(comm, parameters.output.directory + "/history.csv");
       solution = 0.;
@@ -886,6 +917,13 @@ namespace ausroll::scene
 
     double       t_done = time;
     const double t_end = loading.end_time;
+    const double start_fraction = t_done / t_end; // done before this process started
+    // Small strain is meant for displacements small against the body: warn (once) otherwise.
+    const auto box = GridTools::compute_bounding_box(triangulation).get_boundary_points();
+    double     smallest_extent = std::numeric_limits<double>::max();
+    for (unsigned int d = 0; d < dim; ++d)
+      smallest_extent = std::min(smallest_extent, box.second[d] - box.first[d]);
+    bool large_displacement_warned = !model->is_small_strain();
     while (t_done < t_end * (1. - 1e-12))
     {
       // Steps end on the grid of nominal steps (also after cutbacks and load-increment-ratio
@@ -909,20 +947,35 @@ namespace ausroll::scene
       const io::HistoryRow row = history_row(result, cutbacks);
       history->add_row(row);
 
+      if (!large_displacement_warned && solution.linfty_norm() > 0.1 * smallest_extent)
+      {
+        large_displacement_warned = true;
+        if (rank == 0)
+          std::cerr << "ausroll: warning: step " << step_number << ": displacements of "
+                    << solution.linfty_norm() << " mm exceed 10 % of the workpiece's smallest "
+                    << "extent (" << smallest_extent << " mm) with Model/Kinematics = small "
+                    << "strain; its results are not meaningful at this size: use a finite-strain "
+                       "kinematics"
+                    << std::endl;
+      }
       const double       elapsed = wall_clock.wall_time();
       const double       fraction = t_done / t_end;
       std::ostringstream percent;
       percent << std::fixed << std::setprecision(1) << std::setw(5) << 100. * fraction;
       log << "step " << std::setw(4) << step_number << "  t = " << std::setw(9) << t_done << "  ("
-          << percent.str() << "%)  Newton " << std::setw(2) << result.iterations << "  cutbacks "
-          << cutbacks;
+          << percent.str() << "%)  Newton " << std::setw(2) << result.iterations;
+      if (result.outer_passes > 0) // iterations summed over the passes (each within the maximum)
+        log << " in " << result.outer_passes + 1 << " passes";
+      log << "  cutbacks " << cutbacks;
       if (contact.active())
       {
         const auto [n_stick, n_slip] = contact.n_stick_slip();
         log << "  stick/slip " << n_stick << "/" << n_slip;
       }
       log << "  DoFs " << dof_handler.n_dofs() << "  elapsed " << format_seconds(elapsed)
-          << "  ETA " << format_seconds(elapsed * (1. - fraction) / fraction) << std::endl;
+          << "  ETA "
+          << format_seconds(elapsed * (1. - fraction) / std::max(fraction - start_fraction, 1e-12))
+          << std::endl;
       std::ostringstream line;
       line << "step " << step_number << std::setprecision(5);
       for (const auto &entry : row)
@@ -961,9 +1014,12 @@ namespace ausroll::scene
     regression_log << "finished: " << step_number << " steps" << std::endl;
   }
 
-  void run_scene(const std::string &parameter_file, const MPI_Comm comm, const bool resume)
+  void run_scene(const std::string                    &parameter_file,
+                 const MPI_Comm                        comm,
+                 const bool                            resume,
+                 const std::vector<ParameterOverride> &overrides)
   {
-    const SceneParameters     parameters = read_parameter_file(parameter_file);
+    const SceneParameters     parameters = read_parameter_file(parameter_file, overrides);
     std::unique_ptr<Scene<2>> scene = std::make_unique<Scene<2>>(parameters, comm, resume);
     try
     {

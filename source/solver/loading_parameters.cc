@@ -12,7 +12,8 @@ namespace ausroll::solver
     prm.declare_entry("Number of steps",
                       "10",
                       Patterns::Integer(),
-                      "Nominal number of load steps (step size = End time / Number of steps).");
+                      "Nominal number of load steps (step size = End time / Number of steps), "
+                      "at most 1000000.");
     prm.declare_entry("Maximum cutbacks",
                       "6",
                       Patterns::Integer(0, 30),
@@ -44,6 +45,10 @@ namespace ausroll::solver
     prm.leave_subsection();
     require(end_time > 0., "Loading/End time", "must be positive");
     require(steps > 0, "Loading/Number of steps", "must be at least 1");
+    require(steps <= max_steps,
+            "Loading/Number of steps",
+            std::to_string(steps) + " is more than ausroll accepts (" + std::to_string(max_steps)
+                + "); use fewer, larger steps");
     number_of_steps = steps;
   }
 } // namespace ausroll::solver

@@ -4,12 +4,20 @@
 Each file states what it expects in its first lines:
     # expect: <text that must appear in the error message>
     # exit: <status>            (optional, default 2 = input error)
-    # args: <extra arguments>   (optional, e.g. --resume)
+    # args: <extra arguments>   (optional, e.g. --resume; shell-quoted: --set "A/B=c d")
+    # with: <files>             (optional: files next to the case it needs, e.g. an include
+                                 that is not itself a case: name them *.inc)
+    # mkdir: <directories>      (optional: directories to create in the working directory)
+    # file: <path>              (optional: what to pass as FILE.prm instead of the case itself;
+                                 an option such as --print-parameters=json is passed as it is)
 A case passes if ausroll exits with that status, prints the expected text on stderr, does not
-crash (no signal, no "internal error") and leaves no solution.pvd behind.
+crash (no signal, no "internal error"), keeps its message under 4000 characters, stays below 8 GB of memory and 120 s, and (for an input
+error) leaves no solution.pvd and no output directory behind.
 """
 
 import os
+import resource
+import shlex
 import shutil
 import subprocess
 import sys
@@ -17,16 +25,24 @@ import tempfile
 
 
 def expectations(path):
-    expect, status, args = None, 2, []
-    with open(path) as f:
+    e = {"expect": None, "exit": 2, "args": [], "with": [], "mkdir": [], "file": None}
+    with open(path, encoding="utf-8", errors="replace") as f:
         for line in f:
-            if line.startswith("# expect:"):
-                expect = line.split(":", 1)[1].strip()
-            elif line.startswith("# exit:"):
-                status = int(line.split(":", 1)[1])
-            elif line.startswith("# args:"):
-                args = line.split(":", 1)[1].split()
-    return expect, status, args
+            line = line.lstrip("\ufeff")
+            for key in e:
+                if line.startswith(f"# {key}:"):
+                    value = line.split(":", 1)[1].strip()
+                    if key in ("args", "with", "mkdir"):
+                        e[key] = shlex.split(value)
+                    elif key == "exit":
+                        e[key] = int(value)
+                    else:
+                        e[key] = value
+    return e
+
+
+def limit_memory():
+    resource.setrlimit(resource.RLIMIT_AS, (8 << 30, 8 << 30))
 
 
 def main():
@@ -38,7 +54,8 @@ def main():
     failures = 0
     for name in cases:
         path = os.path.join(directory, name)
-        expect, status, args = expectations(path)
+        e = expectations(path)
+        expect, status, args = e["expect"], e["exit"], e["args"]
         if expect is None:
             print(f"{name}: no '# expect:' line")
             failures += 1
@@ -47,8 +64,23 @@ def main():
         try:
             # files the case refers to (e.g. meshes) are resolved relative to the .prm file
             shutil.copy(path, work)
-            run = subprocess.run([ausroll, os.path.join(work, name)] + args, cwd=work,
-                                 capture_output=True, text=True, timeout=120)
+            for other in e["with"]:
+                shutil.copy(os.path.join(directory, other), work)
+            for d in e["mkdir"]:
+                os.makedirs(os.path.join(work, d), exist_ok=True)
+            target = os.path.join(work, e["file"] if e["file"] else name)
+            if e["file"] and e["file"].startswith("-"):  # an option instead of a file
+                target = e["file"]
+            before = set(os.listdir(work))
+            try:
+                run = subprocess.run([ausroll, target] + args, cwd=work, capture_output=True,
+                                     text=True, errors="replace", timeout=120,
+                                     preexec_fn=limit_memory)
+            except subprocess.TimeoutExpired:
+                failures += 1
+                print(f"FAIL {name}: no answer within 120 s")
+                continue
+            created = sorted(set(os.listdir(work)) - before)
             leftovers = [os.path.join(r, f) for r, _, fs in os.walk(work) for f in fs
                          if f == "solution.pvd"]
             problems = []
@@ -56,15 +88,21 @@ def main():
                 problems.append(f"exit status {run.returncode}, expected {status}")
             if expect not in run.stderr:
                 problems.append(f"message lacks '{expect}'")
-            if "internal error" in run.stderr or run.returncode < 0:
+            if len(run.stderr) > 4000:
+                problems.append(f"message of {len(run.stderr)} characters (at most 4000)")
+            if "ausroll: internal error" in run.stderr or run.returncode < 0:
                 problems.append("crashed")
             if leftovers and status == 2:
                 problems.append("left " + ", ".join(leftovers))
+            if created and status in (1, 2):
+                problems.append("created " + ", ".join(created))
             if problems:
                 failures += 1
                 print(f"FAIL {name}: {'; '.join(problems)}\n     stderr: {run.stderr.strip()}")
             else:
-                print(f"ok   {name}: {run.stderr.strip().splitlines()[-1] if run.stderr.strip() else ''}")
+                lines = run.stderr.strip().splitlines()
+                shown = next((l for l in lines if "error" in l), lines[-1] if lines else "")
+                print(f"ok   {name}: {shown[:300]}")
         finally:
             shutil.rmtree(work)
     print(f"{len(cases) - failures} of {len(cases)} malformed inputs handled correctly")

@@ -39,7 +39,7 @@ def run(ausroll, source, name, np, overrides):
     subprocess.run([sys.executable, os.path.join(source, "scripts", "prm_variant.py"),
                     os.path.join(source, "tests", "checks", "scenes", "ring_lame_profile.prm"),
                     prm, f"Output/Directory = {name}"] + overrides, check=True)
-    cmd = [ausroll, prm]
+    cmd = [ausroll, prm, "--overwrite"]
     if np > 1:
         cmd = ["mpirun", "-np", str(np)] + cmd
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",

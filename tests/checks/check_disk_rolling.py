@@ -42,7 +42,7 @@ MU, LOW, HIGH = 0.3, 1990.0, 10250.0
 
 def run(ausroll, prm):
     """Run @p prm (output directory out/) and return its history rows, or None."""
-    result = subprocess.run([ausroll, prm], capture_output=True, text=True,
+    result = subprocess.run([ausroll, prm, "--overwrite"], capture_output=True, text=True,
                             env=dict(os.environ, DEAL_II_NUM_THREADS="1"))
     if result.returncode != 0:
         print(result.stdout, result.stderr)

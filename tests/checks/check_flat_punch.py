@@ -31,7 +31,7 @@ def run(ausroll, source, name, overrides):
                     "Geometry/Mesh file = punch.msh", f"Output/Directory = {name}",
                     "Output/Write VTU = false", "Output/Verbosity = quiet"] + overrides,
                    check=True)
-    result = subprocess.run([ausroll, prm], capture_output=True, text=True)
+    result = subprocess.run([ausroll, prm, "--overwrite"], capture_output=True, text=True)
     if result.returncode != 0:
         print(result.stdout, result.stderr)
         raise SystemExit(f"{name}: ausroll failed with status {result.returncode}")

@@ -117,7 +117,7 @@ def main():
         what = a.flow_column
         if a.reference_run:
             ausroll, prm, ref_out = a.reference_run
-            subprocess.run([ausroll, prm], capture_output=True, check=True)
+            subprocess.run([ausroll, prm, "--overwrite"], capture_output=True, check=True)
             u_ref = flank_value(ref_out)
             print(f"check_gear_rolling: {what} = {u:.6g} mm, reference run {u_ref:.6g} mm")
             u -= u_ref

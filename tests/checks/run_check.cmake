@@ -1,6 +1,6 @@
 # Runs one scene (RUN PRM) in the current directory, then the checker (CHECK ARGS).
 # Fails if either exits non-zero.
-execute_process(COMMAND ${RUN} ${PRM} RESULT_VARIABLE _rc OUTPUT_FILE run.log ERROR_FILE run.log)
+execute_process(COMMAND ${RUN} ${PRM} --overwrite RESULT_VARIABLE _rc OUTPUT_FILE run.log ERROR_FILE run.log)
 if(NOT _rc EQUAL 0)
   file(READ run.log _log)
   message(FATAL_ERROR "scene ${PRM} failed (exit ${_rc}):\n${_log}")

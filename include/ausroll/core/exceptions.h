@@ -32,6 +32,40 @@ namespace ausroll
   };
 
   /**
+   * A command line that cannot be understood (unknown option, malformed `--set`): main() prints
+   * the message and the usage and exits with status 1.
+   */
+  class UsageError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /**
+   * An invalid value found by a builder that knows only the entry's own name (e.g. the
+   * die-surface factory: "Pressure angle"), not its subsection: the caller catches it and
+   * reports `<subsection path><entry>: <what>`.
+   */
+  class EntryError : public InputError
+  {
+  public:
+    EntryError(const std::string &entry, const std::string &what)
+        : InputError(entry + ": " + what)
+        , entry_name(entry)
+        , reason(what)
+    {
+    }
+    /** The entry's name within its subsection. */
+    const std::string &entry() const { return entry_name; }
+    /** What is wrong with its value. */
+    const std::string &what_is_wrong() const { return reason; }
+
+  private:
+    std::string entry_name;
+    std::string reason;
+  };
+
+  /**
    * Throw an InputError with message "<entry>: <what>" unless @p condition holds.
    */
   inline void require(const bool condition, const std::string &entry, const std::string &what)

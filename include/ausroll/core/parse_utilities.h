@@ -25,6 +25,18 @@ namespace ausroll
   /** Parse a comma-separated list of non-negative integers. */
   std::vector<unsigned int> parse_unsigned_list(const std::string &text, const std::string &entry);
 
+  /**
+   * @p text shortened for a message: at most 80 characters, with the full length stated when
+   * cut ("t*(1+t*(1+ ... (180000 characters)").
+   */
+  std::string abbreviate(const std::string &text);
+
+  /**
+   * InputError naming @p entry if @p expression is longer than the expression parser accepts
+   * (20000 characters): "expression too long".
+   */
+  void require_expression_length(const std::string &expression, const std::string &entry);
+
   /** Parse "x, y[, z]" into a point with exactly dim coordinates. */
   template <int dim>
   dealii::Point<dim> parse_point(const std::string &text, const std::string &entry);

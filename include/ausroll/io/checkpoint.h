@@ -40,7 +40,24 @@ namespace ausroll::io
     void read(const std::string &filename);
     /** The single value @p key (RunFailure if missing). */
     double get(const std::string &key) const;
+
+    /** Store every parsed entry ("Section/Entry" -> value) of the run. */
+    void set_parameters(const std::map<std::string, std::string> &entries);
+    /** The entries stored by set_parameters() (empty for a checkpoint written without them). */
+    std::map<std::string, std::string> parameters() const;
   };
+
+  /**
+   * Compare the entries of a run being resumed (@p now) with those stored in its checkpoint
+   * (@p meta, read from @p directory). Entries that fix the mesh, the discretisation or the
+   * material point layout (`Geometry/`, `Model/`, `Material/`, `Adaptivity/`, `Contact/Number of
+   * dies`, `Contact/Die N/Candidate boundaries`) must not differ: InputError listing each such
+   * entry with both values. Returns a warning line for every other changed entry (e.g.
+   * `Loading/End time`, `Output/Interval`), and one if the checkpoint holds no entries.
+   */
+  std::vector<std::string> compare_resume_parameters(const CheckpointMetadata                 &meta,
+                                                     const std::map<std::string, std::string> &now,
+                                                     const std::string &directory);
 
   /**
    * The checkpoint directory of an output directory: `<output>/checkpoint/`. A new checkpoint is

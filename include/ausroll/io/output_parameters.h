@@ -25,8 +25,9 @@ namespace ausroll::io
   struct OutputParameters
   {
     std::string  directory = "output"; ///< `Directory` (relative to the working directory)
-    unsigned int interval = 1;     ///< `Interval`: write VTU every this many steps (0: last only)
-    bool         write_vtu = true; ///< `Write VTU`
+    unsigned int interval = 1;      ///< `Interval`: write VTU every this many steps (0: last only)
+    bool         overwrite = false; ///< `Overwrite` earlier results in directory
+    bool         write_vtu = true;  ///< `Write VTU`
     bool         deformed_mesh = false; ///< `Deformed mesh`: VTU points at deformed positions
     Verbosity    verbosity = Verbosity::normal; ///< `Verbosity`
 

@@ -56,6 +56,12 @@ namespace ausroll::mechanics
   class BoundaryConditions
   {
   public:
+    /**
+     * InputError naming the condition's `Value` if one of its expressions is not finite (nan,
+     * inf, e.g. t/0 or sqrt(-1-t)) at a vertex of its boundary at one of @p times.
+     */
+    void check_values(const dealii::Triangulation<dim> &triangulation,
+                      const std::vector<double>        &times) const;
     /** Parse the expressions of @p parameters; InputError names a bad `Value` or `Components`. */
     explicit BoundaryConditions(const BoundaryConditionParameters &parameters);
 

@@ -60,9 +60,6 @@ namespace ausroll::scene
     double residual_norm() const override;
     /** Nested active set (`Contact/Strategy`): update the contact statuses at a converged state. */
     unsigned int update_constraints_at_convergence(dealii::ConditionalOStream &log) override;
-    /** Delete numbered output files (VTU/PVTU, contact/profile/probe CSV) that an earlier run left
-        in `Output/Directory` (rank 0; not when resuming). */
-    void remove_numbered_outputs() const;
     /** True with the nested active set (curved dies leave second-order gaps after each iterate). */
     bool                    backtrack_with_small_constraint_gaps() const override;
     double                  reference_force() const override;
@@ -112,6 +109,9 @@ namespace ausroll::scene
     double restore_checkpoint_state();
     /** Locate the monitor points and collect the DoFs of the reaction boundaries. */
     void setup_postprocessing();
+    /** Checks of a new run before anything is written: every boundary-id entry against the mesh,
+        an axisymmetric body off the axis, loads finite and dies plausible at sampled times. */
+    void check_setup();
 
     SceneParameters parameters; ///< the input
     MPI_Comm        comm;       ///< communicator
@@ -197,5 +197,8 @@ namespace ausroll::scene
   };
 
   /** Read @p parameter_file and run the scene on @p comm (dispatch on the dimension). */
-  void run_scene(const std::string &parameter_file, const MPI_Comm comm, const bool resume = false);
+  void run_scene(const std::string                    &parameter_file,
+                 const MPI_Comm                        comm,
+                 const bool                            resume = false,
+                 const std::vector<ParameterOverride> &overrides = {});
 } // namespace ausroll::scene

@@ -6,6 +6,7 @@
 
 #include <ausroll/adaptivity/adaptivity_parameters.h>
 #include <ausroll/contact/contact_parameters.h>
+#include <ausroll/core/parameter_file.h>
 #include <ausroll/geometry/geometry_parameters.h>
 #include <ausroll/io/checkpoint.h>
 #include <ausroll/io/output_parameters.h>
@@ -17,7 +18,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <map>
 #include <string>
+#include <vector>
 
 namespace ausroll::scene
 {
@@ -38,6 +41,9 @@ namespace ausroll::scene
     solver::SolverParameters               solver;                 ///< `Solver`
     io::OutputParameters                   output;                 ///< `Output`
     io::PostprocessParameters              postprocess;            ///< `Postprocess`
+    /** Every entry "Section/Entry" -> value as parsed (stored in checkpoints, compared on resume).
+     */
+    std::map<std::string, std::string> entries;
 
     /** Declare every entry of every subsection. */
     static void declare_parameters(dealii::ParameterHandler &prm);
@@ -51,5 +57,6 @@ namespace ausroll::scene
    * Read @p filename into a SceneParameters. Syntax errors, unknown entries and values that do not
    * match their pattern become an InputError that names the file, line and entry.
    */
-  SceneParameters read_parameter_file(const std::string &filename);
+  SceneParameters read_parameter_file(const std::string                    &filename,
+                                      const std::vector<ParameterOverride> &overrides = {});
 } // namespace ausroll::scene

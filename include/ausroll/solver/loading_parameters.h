@@ -21,7 +21,8 @@ namespace ausroll::solver
    */
   struct LoadingParameters
   {
-    double       end_time = 1.;            ///< `End time`
+    static constexpr int max_steps = 1000000; ///< upper bound of `Number of steps`
+    double               end_time = 1.;       ///< `End time`
     unsigned int number_of_steps = 10;     ///< `Number of steps` (nominal step = End time / steps)
     unsigned int max_cutbacks = 6;         ///< `Maximum cutbacks` per step (each halves the step)
     double       step_growth_factor = 1.5; ///< `Step growth factor` back towards the nominal step
