@@ -357,7 +357,9 @@ namespace ausroll::scene
     log << "  mesh adapted: " << triangulation.n_global_active_cells() << " cells, "
         << dof_handler.n_dofs() << " DoFs" << std::endl;
 
-    if (p.reequilibrate)
+    // Before the first step (initial refinement cycles, t = 0) nothing has been solved yet: the
+    // interpolated state is the undeformed one and Newton would only chase round-off.
+    if (p.reequilibrate && time > 0.)
     {
       // Equilibrium on the new mesh at the same time (no load change).
       const solver::NewtonResult result = newton.solve(*this, newton_log);
