@@ -29,7 +29,8 @@ Quantities:
   --history NAME=REDUCTION:EXPR   EXPR: a history column or a Python expression of columns
         (math functions allowed: hypot(die_die_force_x, die_die_force_y)); REDUCTION: last, max,
         min, maxabs, at(T) (linear interpolation in time), mean(T0,T1) (time average over the
-        window, trapezoidal, interpolated at the window ends).
+        window, trapezoidal, interpolated at the window ends); --time-column names another
+        column for T (e.g. die_roll_revolution: the same angle for every step count).
   --profile NAME=FILE:X:Y[:REDUCTION]   a CSV written by the run (FILE relative to its output
         directory; a glob takes the last match in sorted order, e.g. "profile_*.csv"). Without
         REDUCTION the profile Y(X) is compared in the max-norm on the common X range (the finest
@@ -254,8 +255,8 @@ def evaluate_expression(expr, row):
     return float(eval(expr, {"__builtins__": {}}, names))
 
 
-def history_value(rows, reduction, expr):
-    ts = [float(r["time"]) for r in rows]
+def history_value(rows, reduction, expr, time_column="time"):
+    ts = [float(r[time_column]) for r in rows]
     ys = [evaluate_expression(expr, r) for r in rows]
     return reduce_series(reduction, ts, ys)
 
@@ -328,7 +329,7 @@ def collect(args, run, out):
         for name, key in args.value:
             q[name] = float(words[key]) if key in words else None
     for name, reduction, expr in args.history:
-        q[name] = history_value(run.rows, reduction, expr) if run.ok else None
+        q[name] = history_value(run.rows, reduction, expr, args.time_column) if run.ok else None
     for name, spec in args.profile:
         try:
             prof = read_profile(out, spec, args.where) if run.ok else None
@@ -490,6 +491,10 @@ def parse_args(argv):
     p.add_argument("--step-level", type=int, help="level of the step-size sequence")
     p.add_argument("--set", action="append", default=[], help="override for every run")
     p.add_argument("--history", action="append", default=[], metavar="NAME=REDUCTION:EXPR")
+    p.add_argument("--time-column", default="time",
+                   help="history column that at(T) and mean(T0,T1) refer to (e.g. the die "
+                        "revolution angle, which maps to different times for different step "
+                        "counts)")
     p.add_argument("--profile", action="append", default=[], metavar="NAME=FILE:X:Y[:REDUCTION]")
     p.add_argument("--where", action="append", default=[], metavar="COL=max|min")
     p.add_argument("--after", help="command run after every run ({out}: its output directory)")

@@ -13,12 +13,13 @@ nodes, die rho_2 = r_pD sin(alpha) at its pitch point (57 teeth, DP 8.5, alpha =
 rigid die E* = E / (1 - nu^2):
     1/R = 1/rho_1 + 1/rho_2,  a = sqrt(4 P R / (pi E*)),  p0 = 2 P / (pi a),
 P = |F| of the die per mm (history.csv; frictionless, so |F| is the normal force).
-Tolerance 3 % (issue 12) on a and p0: the tooth is not a half-space (its thickness at the pitch
-point, 4.7 mm, is 27 half-widths, and it bends: the contact slides 0.015 mm down the flank), the
-radii of curvature vary by +-0.5 % across the contact, and the fit of 20-30 nodal pressures has a
-discretisation error of about 1 % on this mesh (measured: a -1.2 ... -1.4 %, p0 +0.9 ... +1.0 %; the same
-resolution of the Hertz scene gives 0.4 %; one more level, 40-54 nodes, gives the same -1.0 ...
--1.4 % and +0.8 ... +1.2 %: not a discretisation error). The contact must be resolved: >= 10 nodes.
+Tolerance 3 % (issue 12) on a and p0. Measured: a -1.2 ... -1.4 %, p0 +0.9 ... +1.0 % (20-30
+nodes); one more refinement level (40-54 nodes) gives the same -1.0 ... -1.4 % and +0.8 ... +1.2 %,
+so the rest is not discretisation (the same fit on the Hertz scene reaches 0.4 %) but the model
+difference between a tooth and Hertz's two half-spaces: the tooth bends (the contact slides
+0.015 mm down the flank and the flank rotates), it is a finite body (4.7 mm thick, 27 half-widths),
+the radii of curvature vary by +-0.5 % across the contact, and the run is finite strain. The
+contact must also be resolved: >= 10 nodes.
 """
 
 import argparse
