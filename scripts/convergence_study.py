@@ -22,7 +22,8 @@ Levels: each level L is the base file with the overrides of --level-set (default
 adaptive "Adaptivity/Maximum level = {level}"), cell size h ~ ratio^-L (--level-ratio, default 2).
 Steps: each n is the base file (at --step-level, if given) with --step-set (default
 "Loading/Number of steps = {n}"), h ~ 1/n. In a template "{expr}" is evaluated in Python with
-`level` and `n` (e.g. "Loading/End time = {n + 8}"). --set adds overrides to every run. Every run
+`level` and `n` (e.g. "Loading/End time = {n + 8}"). --set adds overrides to every run (applied first: the
+sequence overrides win). Every run
 gets its own output directory WORK/<name> (fresh, so no run ever writes into another's).
 
 Quantities:
@@ -297,7 +298,7 @@ def run_case(args, name, overrides):
         for f in glob.glob(os.path.join(out, "*")):
             if os.path.isfile(f):
                 os.remove(f)
-    run = run_variant(args.ausroll, args.prm, args.work, name, overrides + args.set, np=args.np,
+    run = run_variant(args.ausroll, args.prm, args.work, name, args.set + overrides, np=args.np,
                       reuse=args.reuse, timeout=args.timeout)
     status = "ok" if run.ok else f"FAILED (exit {run.returncode})"
     print(f"  {name}: {status}, {len(run.rows) - 1} steps, CPU {run.cpu:.1f} s, "

@@ -5,7 +5,7 @@
 # step-size sequence (rolling steps per revolution, Coulomb mu = 0.3); mean die force over
 # 60-300 degrees of revolution, residual lobe (max) and trough (min) of the rim, and the residual
 # rim in the max-norm on the common angle grid.
-# Usage: benchmarks/convergence/disk_rolling.sh [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL]
+# Usage: benchmarks/convergence/disk_rolling.sh [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [more convergence_study.py options]
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 AUSROLL="${1:-$ROOT/build/ausroll}"
@@ -14,6 +14,7 @@ LEVELS="${3:-1 2 3}"
 STEPS="${4:-144 288 576}"
 STEP_LEVEL="${5:-2}"
 # shellcheck disable=SC2086
+shift $(( $# < 5 ? $# : 5 ))
 exec /usr/bin/python3 "$ROOT/scripts/convergence_study.py" "$ROOT/prm/disk_rolling_adaptive.prm" \
   --ausroll "$AUSROLL" --work "$WORK" \
   --levels $LEVELS --level-set "Adaptivity/Maximum level = {level}" \
@@ -27,4 +28,4 @@ exec /usr/bin/python3 "$ROOT/scripts/convergence_study.py" "$ROOT/prm/disk_rolli
   --profile "lobe=profile_*.csv:angle:radial_displacement:max" \
   --profile "trough=profile_*.csv:angle:radial_displacement:min" \
   --profile "rim=profile_*.csv:angle:radial_displacement" \
-  --plot "$WORK/disk_work_precision.png"
+  --plot "$WORK/disk_work_precision.png" "$@"
