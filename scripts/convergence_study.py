@@ -49,7 +49,8 @@ ln r), the extrapolated value is f_ext = f_k + (f_k - f_{k-1}) / (r^p - 1), the 
 run i is |f_i - f_ext|, and the uncertainty of the finest run is GCI = F_s |f_k - f_{k-1}| /
 (r^p - 1) with Roache's safety factor F_s = 1.25 when the convergence is asymptotic (monotone, and
 with four or more runs the orders of the last two triples agree within 25 %) and F_s = 3 when it is
-not (or with two runs and an assumed --formal-order). Oscillatory convergence (the differences
+not (the order outside [0.5, 4], or [p_f / 2, 2 p_f] with --formal-order p_f; or two runs and an
+assumed --formal-order). Oscillatory convergence (the differences
 change sign) gives no order: the estimate is the finest value and the uncertainty the range of the
 last three values. Profiles use the max-norms of the differences (s = +1) and extrapolate
 pointwise. Pure arithmetic: tests/scripts/test_convergence_study.py checks it on synthetic data.
@@ -169,9 +170,9 @@ def analyse_sequence(values, sizes, formal_order=None, norm=None):
             consistent = abs(p - q) <= 0.25 * max(p, q)
         elif k >= 4:
             consistent = False
-        in_range = True
-        if formal_order is not None:
-            in_range = 0.5 * formal_order <= p <= 2.0 * formal_order
+        # without a formal order: orders outside [0.5, 4] are not taken as asymptotic
+        lo, hi = (0.5 * formal_order, 2.0 * formal_order) if formal_order else (0.5, 4.0)
+        in_range = lo <= p <= hi
         asymptotic = consistent and in_range and k >= 3
         fs = SAFETY_ASYMPTOTIC if asymptotic else SAFETY_NOT_ASYMPTOTIC
         out["asymptotic"] = asymptotic
@@ -180,7 +181,7 @@ def analyse_sequence(values, sizes, formal_order=None, norm=None):
             if not consistent:
                 reasons.append("orders of the last two triples differ by more than 25 %")
             if not in_range:
-                reasons.append(f"order outside [{0.5 * formal_order:g}, {2 * formal_order:g}]")
+                reasons.append(f"order outside [{lo:g}, {hi:g}]")
             out["note"] = "not asymptotic (" + "; ".join(reasons) + "): F_s = 3"
         elif k == 3:
             out["note"] = "three runs: order not cross-checked, F_s = 1.25 (Roache)"

@@ -94,6 +94,10 @@ h = [1.0, 0.5, 0.25]
 a = cs.analyse_sequence([1 + x ** 5 for x in h], h, formal_order=1.0)
 check("order 5 against formal 1: not asymptotic", not a["asymptotic"])
 
+a = cs.analyse_sequence([1 + x ** 0.2 for x in h], h)
+check("order 0.2 without formal order: not asymptotic, F_s = 3",
+      not a["asymptotic"] and a["safety"] == 3.0 and close(a["order"], 0.2, 1e-10))
+
 # 9. reductions of a history
 ts = [0.0, 0.5, 1.0, 1.5, 2.0]
 ys = [0.0, 1.0, 4.0, 1.0, -5.0]
