@@ -8,8 +8,8 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 AUSROLL="${1:-$ROOT/build/ausroll}"
 WORK="${2:-/tmp/convergence_gear}"
-LEVELS="${3:-2 3 4 5}"
-STEPS="${4:-30 60 120}"
+LEVELS="${3:-3 4 5}"
+STEPS="${4:-60 120 240 480}"
 STEP_LEVEL="${5:-4}"
 # shellcheck disable=SC2086
 shift $(( $# < 5 ? $# : 5 ))
