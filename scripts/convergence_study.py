@@ -22,9 +22,9 @@ Levels: each level L is the base file with the overrides of --level-set (default
 adaptive "Adaptivity/Maximum level = {level}"), cell size h ~ ratio^-L (--level-ratio, default 2).
 Steps: each n is the base file (at --step-level, if given) with --step-set (default
 "Loading/Number of steps = {n}"), h ~ 1/n. In a template "{expr}" is evaluated in Python with
-`level` and `n` (e.g. "Loading/End time = {n + 8}"). --set adds overrides to every run (applied first: the
-sequence overrides win). Every run
-gets its own output directory WORK/<name> (fresh, so no run ever writes into another's).
+`level` and `n` (e.g. "Loading/End time = {n + 8}"). --set adds overrides to every run (applied
+first: the sequence overrides win). Every run gets its own output directory WORK/<name> (fresh, so
+no run ever writes into another's).
 
 Quantities:
   --history NAME=REDUCTION:EXPR   EXPR: a history column or a Python expression of columns
@@ -50,9 +50,8 @@ run i is |f_i - f_ext|, and the uncertainty of the finest run is GCI = F_s |f_k 
 (r^p - 1) with Roache's safety factor F_s = 1.25 when the convergence is asymptotic (monotone, and
 with four or more runs the orders of the last two triples agree within 25 %) and F_s = 3 when it is
 not (the order outside [0.5, 4], or [p_f / 2, 2 p_f] with --formal-order p_f; or two runs and an
-assumed --formal-order). Oscillatory convergence (the differences
-change sign) gives no order: the estimate is the finest value and the uncertainty the range of the
-last three values. Profiles use the max-norms of the differences (s = +1) and extrapolate
+assumed --formal-order). Oscillatory convergence (the differences change sign) gives no order:
+the estimate is the finest value and the uncertainty the range of the last three values. Profiles use the max-norms of the differences (s = +1) and extrapolate
 pointwise. Pure arithmetic: tests/scripts/test_convergence_study.py checks it on synthetic data.
 
 Output: a Markdown table per sequence on stdout, WORK/convergence.json (all numbers), and with
