@@ -433,7 +433,7 @@ ausroll_add_check(NAME gear_hertz_pitch
   CHECK ${AUSROLL_CHECKS_DIR}/check_gear_hertz.py ARGS out --tol 0.03 --min-nodes 10)
 
 # Resolved gear scene (prm/gear_rolling_adaptive.prm), short pass across the pitch point: at least
-# 8 nodes in contact within 0.6 deg of the pitch point (measured 9-10), the Coulomb bound
+# 8 nodes in contact within 0.6 deg of the pitch point (measured 8-10), the Coulomb bound
 # |F_t| <= 1.05 mu F_n on the line of action (measured 0.1001 with mu = 0.1; margin in
 # check_gear_adaptive.py), the mesh adapted; and np = 2 gives the np = 1 history to 1e-8. The scene
 # is written from the shipped file by scripts/prm_variant.py (its relative include made absolute).
