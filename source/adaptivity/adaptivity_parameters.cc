@@ -47,6 +47,13 @@ namespace ausroll::adaptivity
                       "0",
                       Patterns::Double(0.),
                       "Cells smaller than this (mm) are not refined.");
+    prm.declare_entry("Keep plastic strain above",
+                      "0",
+                      Patterns::Double(0.),
+                      "Cells with a material point whose equivalent plastic strain exceeds this "
+                      "value are not coarsened (0: no such limit): the plastically deformed layer "
+                      "left behind a die keeps the resolution it was formed on. Works with every "
+                      "indicator.");
     prm.declare_entry(
         "State transfer",
         "polynomial",
@@ -79,6 +86,7 @@ namespace ausroll::adaptivity
     max_level = prm.get_integer("Maximum level");
     min_level = prm.get_integer("Minimum level");
     min_cell_size = prm.get_double("Minimum cell size");
+    keep_plastic_strain = prm.get_double("Keep plastic strain above");
     reequilibrate = prm.get_bool("Re-equilibrate");
     polynomial_transfer = prm.get("State transfer") == "polynomial";
     prm.leave_subsection();

@@ -128,6 +128,16 @@ namespace ausroll::adaptivity
         }
     }
 
+    if (parameters.keep_plastic_strain > 0.)
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &point : material_points.get_data(cell))
+            if (point->committed.equivalent_plastic_strain > parameters.keep_plastic_strain)
+            {
+              coarsen[cell->active_cell_index()] = false;
+              break;
+            }
+
     // Apply the flags with the limits.
     bool any = false;
     for (const auto &cell : triangulation.active_cell_iterators())

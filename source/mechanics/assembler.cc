@@ -667,10 +667,7 @@ namespace ausroll::mechanics
     // B-bar of Hughes with eps_bar_zz = (theta_0 - theta) / 3); the in-plane scaling leaks the
     // volume correction into the 3D deviatoric strain and made Q2 too soft (flat punch: 0.928
     // p_lim instead of 0.998)
-    setup.n_vol
-        = (setup.cell_average && dim == 2 && kinematics.planar_model() == PlanarModel::plane_strain)
-              ? 3
-              : kinematics.volumetric_dimensions();
+    setup.n_vol = f_bar_dimensions();
     setup.alpha = 1. / setup.n_vol;
     for (unsigned int d = 0; d < setup.n_vol; ++d)
       setup.E[d][d] = 1.;
@@ -747,6 +744,91 @@ namespace ausroll::mechanics
       status.message = Utilities::MPI::broadcast(comm, setup.message, bad_rank);
     }
     return status;
+  }
+
+  template <int dim>
+  unsigned int Assembler<dim>::f_bar_dimensions() const
+  {
+    return (fe.degree > 1 && dim == 2 && kinematics.planar_model() == PlanarModel::plane_strain)
+               ? 3
+               : kinematics.volumetric_dimensions();
+  }
+
+  template <int dim>
+  std::vector<Tensor<2, 3>> Assembler<dim>::material_deformation_gradients(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const TrilinosWrappers::MPI::Vector                  &solution) const
+  {
+    FEValues<dim> fe_values(mapping,
+                            fe,
+                            cell_quadrature,
+                            update_values | update_gradients | update_quadrature_points
+                                | update_JxW_values);
+    fe_values.reinit(cell);
+    const unsigned int               n_q = cell_quadrature.size();
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<Tensor<2, dim>>      grad_u(n_q);
+    std::vector<Tensor<1, dim>>      u(n_q);
+    fe_values[displacement].get_function_gradients(solution, grad_u);
+    fe_values[displacement].get_function_values(solution, u);
+    std::vector<Tensor<2, 3>> F(n_q);
+    for (unsigned int q = 0; q < n_q; ++q)
+      F[q] = kinematics.deformation_gradient(grad_u[q], u[q], fe_values.quadrature_point(q));
+    if (locking != VolumetricLocking::f_bar)
+      return F;
+
+    // J0 and tr(F0 - I) as in assemble(): at the centre (Q1) or averaged over the cell
+    double J0 = 0., trace_H0 = 0.;
+    if (fe.degree == 1)
+    {
+      Point<dim> unit_center;
+      for (unsigned int d = 0; d < dim; ++d)
+        unit_center[d] = 0.5;
+      FEValues<dim> fe_center(mapping,
+                              fe,
+                              Quadrature<dim>(unit_center),
+                              update_values | update_gradients | update_quadrature_points);
+      fe_center.reinit(cell);
+      std::vector<Tensor<2, dim>> g0(1);
+      std::vector<Tensor<1, dim>> u0(1);
+      fe_center[displacement].get_function_gradients(solution, g0);
+      fe_center[displacement].get_function_values(solution, u0);
+      const Tensor<2, 3> F0
+          = kinematics.deformation_gradient(g0[0], u0[0], fe_center.quadrature_point(0));
+      J0 = determinant(F0);
+      trace_H0 = trace(F0) - 3.;
+    }
+    else
+    {
+      double volume = 0.;
+      for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const double dV
+            = fe_values.JxW(q) * kinematics.volume_factor(fe_values.quadrature_point(q));
+        volume += dV;
+        J0 += determinant(F[q]) * dV;
+        trace_H0 += (trace(F[q]) - 3.) * dV;
+      }
+      J0 /= volume;
+      trace_H0 /= volume;
+    }
+    const unsigned int n_vol = f_bar_dimensions();
+    const double       alpha = 1. / n_vol;
+    for (unsigned int q = 0; q < n_q; ++q)
+      if (model.is_small_strain())
+      {
+        const double shift = alpha * (trace_H0 - (trace(F[q]) - 3.));
+        for (unsigned int d = 0; d < n_vol; ++d)
+          F[q][d][d] += shift;
+      }
+      else
+      {
+        const double s = std::pow(J0 / determinant(F[q]), alpha);
+        for (unsigned int a = 0; a < n_vol; ++a)
+          for (unsigned int b = 0; b < n_vol; ++b)
+            F[q][a][b] *= s;
+      }
+    return F;
   }
 
   template class Assembler<2>;

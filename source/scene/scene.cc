@@ -376,7 +376,9 @@ namespace ausroll::scene
     log << "  mesh adapted: " << triangulation.n_global_active_cells() << " cells, "
         << dof_handler.n_dofs() << " DoFs" << std::endl;
 
-    if (p.reequilibrate)
+    // Before the first step (initial refinement cycles, t = 0) nothing has been solved yet: the
+    // interpolated state is the undeformed one and Newton would only chase round-off.
+    if (p.reequilibrate && time > 0.)
     {
       // Equilibrium on the new mesh at the same time (no load change).
       const solver::NewtonResult result = newton.solve(*this, newton_log);
@@ -391,25 +393,17 @@ namespace ausroll::scene
   template <int dim>
   void Scene<dim>::rebase_material_points()
   {
-    FEValues<dim>                    fe_values(mapping,
-                            fe,
-                            assembler->quadrature(),
-                            update_values | update_gradients | update_quadrature_points);
-    const FEValuesExtractors::Vector displacement(0);
-    std::vector<Tensor<2, dim>>      grad_u(assembler->quadrature().size());
-    std::vector<Tensor<1, dim>>      u(assembler->quadrature().size());
+    // with the deformation gradient the material sees (F-bar included): re-basing with the plain
+    // F left every F-bar state off equilibrium by the difference, growing at every adaptation
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
       {
-        fe_values.reinit(cell);
-        fe_values[displacement].get_function_gradients(solution_ghosted, grad_u);
-        fe_values[displacement].get_function_values(solution_ghosted, u);
+        const std::vector<Tensor<2, 3>> F
+            = assembler->material_deformation_gradients(cell, solution_ghosted);
         const auto points = material_points.get_data(cell);
         for (unsigned int q = 0; q < points.size(); ++q)
         {
-          model->rebase(
-              points[q]->committed,
-              kinematics.deformation_gradient(grad_u[q], u[q], fe_values.quadrature_point(q)));
+          model->rebase(points[q]->committed, F[q]);
           points[q]->trial = points[q]->committed;
         }
       }

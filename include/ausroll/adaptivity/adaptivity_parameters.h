@@ -25,8 +25,11 @@ namespace ausroll::adaptivity
     unsigned int max_level = 8;           ///< `Maximum level` of refinement
     unsigned int min_level = 0;           ///< `Minimum level` (no coarsening below)
     double       min_cell_size = 0.; ///< `Minimum cell size` (mm; cells this small are not refined)
-    bool         reequilibrate = true;       ///< `Re-equilibrate` after transfer
-    bool         polynomial_transfer = true; ///< `State transfer` = polynomial (else nearest point)
+    /** `Keep plastic strain above`: cells with a point above this equivalent plastic strain are
+        not coarsened (0: off), so that the plastically deformed layer keeps its resolution. */
+    double keep_plastic_strain = 0.;
+    bool   reequilibrate = true;       ///< `Re-equilibrate` after transfer
+    bool   polynomial_transfer = true; ///< `State transfer` = polynomial (else nearest point)
 
     /** True if the mesh is adapted at all. */
     bool active() const

@@ -30,6 +30,8 @@ namespace ausroll::adaptivity
    *    beyond twice that.
    *  - plastic strain: max - min of the equivalent plastic strain over the cell's points, fixed
    *    fractions (marks the elastic-plastic front and strong gradients).
+   *  - `Keep plastic strain above` > 0: no cell with a point above that equivalent plastic strain
+   *    is coarsened.
    * Returns true if any cell (on any rank) is flagged.
    */
   template <int dim>

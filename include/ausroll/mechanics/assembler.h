@@ -121,6 +121,17 @@ namespace ausroll::mechanics
                             const RowTransforms<dim>                    *row_transforms,
                             const AssemblyTargets                       &targets) const;
 
+    /**
+     * The deformation gradients the material points of @p cell see at the displacement
+     * @p solution (ghosted): F, or F-bar with the volumetric correction of assemble() (cell centre
+     * for Q1, cell average for higher degrees; B-bar for small strain). Used to re-base
+     * transferred material states (ConstitutiveModel::rebase) so that the next evaluation returns
+     * the transferred stress.
+     */
+    std::vector<dealii::Tensor<2, 3>> material_deformation_gradients(
+        const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+        const dealii::TrilinosWrappers::MPI::Vector                  &solution) const;
+
   private:
     struct Setup;       ///< what one assembly call needs in every cell (flags, tables, inputs)
     struct ScratchData; ///< FEValues and work arrays of one thread (WorkStream scratch)
@@ -154,6 +165,8 @@ namespace ausroll::mechanics
 
     /** Add one cell to the targets (serial, in cell order: the WorkStream copier). */
     void copy_local_to_global(const CopyData &copy, const Setup &setup) const;
+    /** n of the F-bar scaling: the number of directions whose stretch it corrects. */
+    unsigned int f_bar_dimensions() const;
 
     const dealii::Mapping<dim>        &mapping;
     const dealii::FiniteElement<dim>  &fe;
