@@ -663,14 +663,9 @@ namespace ausroll::mechanics
       setup.component[i] = ci.first;
       setup.node_dofs[ci.second][ci.first] = i;
     }
-    // Q2 and higher in plane strain: isotropic scaling of the whole F (n = 3, F_bar_zz = s, as the
-    // B-bar of Hughes with eps_bar_zz = (theta_0 - theta) / 3); the in-plane scaling leaks the
-    // volume correction into the 3D deviatoric strain and made Q2 too soft (flat punch: 0.928
-    // p_lim instead of 0.998)
-    setup.n_vol
-        = (setup.cell_average && dim == 2 && kinematics.planar_model() == PlanarModel::plane_strain)
-              ? 3
-              : kinematics.volumetric_dimensions();
+    // n of the F-bar scaling (Q2 and higher in plane strain scale the whole F: see
+    // PlanarKinematics::volumetric_dimensions)
+    setup.n_vol = kinematics.volumetric_dimensions(setup.cell_average);
     setup.alpha = 1. / setup.n_vol;
     for (unsigned int d = 0; d < setup.n_vol; ++d)
       setup.E[d][d] = 1.;
@@ -750,4 +745,5 @@ namespace ausroll::mechanics
   }
 
   template class Assembler<2>;
+  template class Assembler<3>;
 } // namespace ausroll::mechanics
