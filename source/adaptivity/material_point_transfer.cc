@@ -176,4 +176,5 @@ namespace ausroll::adaptivity
   }
 
   template class MaterialPointTransfer<2>;
+  template class MaterialPointTransfer<3>;
 } // namespace ausroll::adaptivity

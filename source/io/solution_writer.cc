@@ -84,4 +84,5 @@ namespace ausroll::io
   }
 
   template class SolutionWriter<2>;
+  template class SolutionWriter<3>;
 } // namespace ausroll::io

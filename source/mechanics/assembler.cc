@@ -663,11 +663,9 @@ namespace ausroll::mechanics
       setup.component[i] = ci.first;
       setup.node_dofs[ci.second][ci.first] = i;
     }
-    // Q2 and higher in plane strain: isotropic scaling of the whole F (n = 3, F_bar_zz = s, as the
-    // B-bar of Hughes with eps_bar_zz = (theta_0 - theta) / 3); the in-plane scaling leaks the
-    // volume correction into the 3D deviatoric strain and made Q2 too soft (flat punch: 0.928
-    // p_lim instead of 0.998)
-    setup.n_vol = f_bar_dimensions();
+    // n of the F-bar scaling (Q2 and higher in plane strain scale the whole F: see
+    // PlanarKinematics::volumetric_dimensions)
+    setup.n_vol = kinematics.volumetric_dimensions(setup.cell_average);
     setup.alpha = 1. / setup.n_vol;
     for (unsigned int d = 0; d < setup.n_vol; ++d)
       setup.E[d][d] = 1.;
@@ -747,14 +745,6 @@ namespace ausroll::mechanics
   }
 
   template <int dim>
-  unsigned int Assembler<dim>::f_bar_dimensions() const
-  {
-    return (fe.degree > 1 && dim == 2 && kinematics.planar_model() == PlanarModel::plane_strain)
-               ? 3
-               : kinematics.volumetric_dimensions();
-  }
-
-  template <int dim>
   std::vector<Tensor<2, 3>> Assembler<dim>::material_deformation_gradients(
       const typename DoFHandler<dim>::active_cell_iterator &cell,
       const TrilinosWrappers::MPI::Vector                  &solution) const
@@ -812,7 +802,7 @@ namespace ausroll::mechanics
       J0 /= volume;
       trace_H0 /= volume;
     }
-    const unsigned int n_vol = f_bar_dimensions();
+    const unsigned int n_vol = kinematics.volumetric_dimensions(fe.degree > 1);
     const double       alpha = 1. / n_vol;
     for (unsigned int q = 0; q < n_q; ++q)
       if (model.is_small_strain())
@@ -832,4 +822,5 @@ namespace ausroll::mechanics
   }
 
   template class Assembler<2>;
+  template class Assembler<3>;
 } // namespace ausroll::mechanics

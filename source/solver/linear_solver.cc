@@ -165,16 +165,19 @@ namespace ausroll::solver
         std::unique_ptr<Epetra_MultiVector> unused_modes;
         data.set_parameters(list, unused_modes, A.trilinos_matrix());
 
+        // (an Epetra_MultiVector of no vectors throws: create it only when there are modes)
         const unsigned int n_local = A.local_range().second - A.local_range().first;
-        Epetra_MultiVector modes(A.trilinos_matrix().DomainMap(), rigid_body_modes.size());
+        std::unique_ptr<Epetra_MultiVector> modes;
         if (!rigid_body_modes.empty() && rigid_body_modes[0].size() == n_local)
         {
+          modes = std::make_unique<Epetra_MultiVector>(A.trilinos_matrix().DomainMap(),
+                                                       rigid_body_modes.size());
           for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
             for (unsigned int i = 0; i < n_local; ++i)
-              modes[m][i] = rigid_body_modes[m][i];
+              (*modes)[m][i] = rigid_body_modes[m][i];
           list.set("null space: type", "pre-computed");
-          list.set("null space: dimension", modes.NumVectors());
-          list.set("null space: vectors", modes.Values());
+          list.set("null space: dimension", modes->NumVectors());
+          list.set("null space: vectors", modes->Values());
         }
         TrilinosWrappers::PreconditionAMG amg;
         amg.initialize(A, list);
@@ -207,4 +210,5 @@ namespace ausroll::solver
   }
 
   template class LinearSolver<2>;
+  template class LinearSolver<3>;
 } // namespace ausroll::solver

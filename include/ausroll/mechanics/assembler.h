@@ -67,7 +67,8 @@ namespace ausroll::mechanics
    * stretch r / R in axisymmetric models (the deformed area element is 2 pi r dl). Its derivative
    * (the load stiffness, non-symmetric) enters the tangent, so Newton stays quadratic. Plane
    * stress: the change of thickness is not included (force per deformed length and reference
-   * thickness; the thickness stretch lives at the material points, not on the faces).
+   * thickness; the thickness stretch lives at the material points, not on the faces). 3D models
+   * (dim = 3): dead tractions only, a non-zero follower pressure throws (not implemented yet).
    *
    * Volumetric locking (`Model/Volumetric locking treatment = F-bar`, de Souza Neto, Peric,
    * Dutko and Owen 1996): the material points see F_bar = s F with s = (J0 / J)^(1/n), J = det F
@@ -75,7 +76,7 @@ namespace ausroll::mechanics
    * average of det F over the cell, the mean dilatation: one centre value leaves the volumetric
    * modes of Q2 that vanish at the centre free, and a flat-punch limit load came out 7 % low),
    * n = PlanarKinematics::
-   * volumetric_dimensions() (n = 2 scales only the in-plane block of F, so F_bar_zz = 1 stays
+   * volumetric_dimensions(...) (n = 2 scales only the in-plane block of F, so F_bar_zz = 1 stays
    * plane strain; n = 3 scales the whole F, hoop stretch included). Exception: Q2 and higher in
    * plane strain use n = 3 on the whole F (F_bar_zz = s, like Hughes' B-bar with eps_bar_zz =
    * (theta_0 - theta) / 3): with the in-plane scaling the volume correction changes the 3D
@@ -165,8 +166,6 @@ namespace ausroll::mechanics
 
     /** Add one cell to the targets (serial, in cell order: the WorkStream copier). */
     void copy_local_to_global(const CopyData &copy, const Setup &setup) const;
-    /** n of the F-bar scaling: the number of directions whose stretch it corrects. */
-    unsigned int f_bar_dimensions() const;
 
     const dealii::Mapping<dim>        &mapping;
     const dealii::FiniteElement<dim>  &fe;

@@ -45,11 +45,20 @@ namespace ausroll::mechanics
     double volume_factor(const dealii::Point<dim> &X) const;
 
     /**
-     * Number n of directions that carry volume change in the F-bar method: 2 for plane strain and
-     * plane stress (only the in-plane block of F is scaled, F_zz stays), 3 for axisymmetric and 3D
-     * models (the whole F, hoop stretch included, is scaled).
+     * Number n of directions that carry volume change in the F-bar method, for the cell-centre J0
+     * of Q1 (@p mean_dilatation false) or the cell-average J0 of Q2 and higher (true): 3 for 3D
+     * and axisymmetric models (the whole F, hoop stretch included, is scaled); 2 for plane stress
+     * (only the in-plane block, F_zz comes from sigma_zz = 0); plane strain 2 for Q1 (F_bar_zz = 1)
+     * and 3 with mean dilatation (F_bar_zz = s, as Hughes' B-bar with eps_bar_zz = (theta_0 -
+     * theta) / 3: the in-plane scaling leaks the volume correction into the 3D deviatoric strain
+     * and made Q2 too soft, flat punch 0.928 p_lim instead of 0.998).
      */
-    unsigned int volumetric_dimensions() const { return is_axisymmetric() || dim == 3 ? 3 : 2; }
+    unsigned int volumetric_dimensions(const bool mean_dilatation) const
+    {
+      if (dim == 3 || is_axisymmetric())
+        return 3;
+      return mean_dilatation && model == PlanarModel::plane_strain ? 3 : 2;
+    }
 
     /** True for the axisymmetric model (shape function values enter the gradient). */
     bool is_axisymmetric() const { return model == PlanarModel::axisymmetric && dim == 2; }

@@ -45,6 +45,12 @@ namespace ausroll::solver
     void set_rigid_body_modes(const dealii::DoFHandler<dim> &dof_handler,
                               const dealii::Mapping<dim>    &mapping);
 
+    /** The rigid-body modes on the locally owned DoFs (3 in 2D, 6 in 3D), mode-major. */
+    const std::vector<std::vector<double>> &get_rigid_body_modes() const
+    {
+      return rigid_body_modes;
+    }
+
     /**
      * The matrix is about to be (re)initialised with a new sparsity pattern (call before every
      * reinit of the matrix, i.e. after every mesh change, while the old matrix still exists: the
