@@ -418,3 +418,12 @@ ausroll_add_parallel_check(NAME disk_rolling_short_np2
 # Gear rolling (short trailing pass, frictionless active set) on 1 and 2 ranks: 1e-8.
 ausroll_add_parallel_check(NAME gear_rolling_short_np2
   PRM ${CMAKE_CURRENT_BINARY_DIR}/gear_rolling_short.prm HISTORY out/history.csv)
+
+# ---------------------------------------------------------------- hard cases (issue 17)
+# Short versions of the hard cases past the point where they failed before the fixes
+# (doc/scenes/hard_cases.md): the punch on its coarsest mesh to 1 mm (<= 2 cutbacks, force within
+# 5 % of the three-mesh extrapolation, 2k <= F/a <= (2 + pi) k), upsetting with the platen on the
+# top face only to 25 % with the warning that the corner folds, upsetting as shipped with median
+# <= 3 Newton iterations (force within 2 % of Q2 16x12), indentation to t = 0.75 with <= 2
+# cutbacks (Prandtl within 15 %). Reasons of each tolerance in the script. About 40 s of CPU.
+ausroll_add_script_check(NAME hard_cases SCRIPT ${AUSROLL_CHECKS_DIR}/check_hard_cases.py)
