@@ -89,14 +89,16 @@ def main():
                   f"{len(rows)} | {cutbacks} | {statistics.median(newton) if newton else 0} / "
                   f"{max(newton) if newton else 0} | {cpu:.0f} | {force:.1f} | "
                   f"{'yes' if warned else 'no'} |", flush=True)
-        if len(forces) == 3 and (forces[1] - forces[0]) * (forces[2] - forces[1]) > 0:
-            ratio = (forces[1] - forces[0]) / (forces[2] - forces[1])
+        ratio = ((forces[1] - forces[0]) / (forces[2] - forces[1])
+                 if len(forces) == 3 and forces[2] != forces[1] else 0.)
+        if len(forces) == 3 and ratio > 1:
             order = math.log(ratio) / math.log(2)
             extrapolated = forces[2] + (forces[2] - forces[1]) / (ratio - 1)
             print(f"\n{case}: monotone, observed order {order:.2f}, extrapolated force "
                   f"{extrapolated:.1f} +- {abs(extrapolated - forces[2]):.1f}\n")
         elif len(forces) == 3:
-            print(f"\n{case}: forces {forces} not monotone with the mesh\n")
+            print(f"\n{case}: forces {', '.join(f'{f:.1f}' for f in forces)}: the differences "
+                  f"do not shrink with the mesh (ratio {ratio:.2f}), no extrapolation\n")
     return 0
 
 

@@ -1026,7 +1026,6 @@ namespace ausroll::scene
       last_step_size = dt_try;
       ++step_number;
       t_done = time;
-      check_distortion();
       const io::HistoryRow row = history_row(result, cutbacks);
       history->add_row(row);
 
@@ -1050,6 +1049,8 @@ namespace ausroll::scene
         if (entry.first != "wall_seconds" && entry.first != "step")
           line << " " << entry.first << "=" << (std::abs(entry.second) < 1e-12 ? 0. : entry.second);
       regression_log << line.str() << std::endl;
+
+      check_distortion();
 
       if (parameters.adaptivity.interval > 0 && step_number % parameters.adaptivity.interval == 0
           && t_done < t_end * (1. - 1e-12))
