@@ -182,10 +182,13 @@ namespace ausroll::contact
             n.die = k;
           }
         }
+        // A node that has used up its status changes (`Maximum status changes`) still closes
+        // when it penetrates, and then stays closed (update_statuses() no longer judges it):
+        // frozen open, a node chattering at the edge of a curved punch's contact could end the
+        // step inside the die (doc/scenes/hard_cases.md, issue 17).
         if (allow_closing && !n.fresh && (!only_unchanged_nodes || n.changes == 0)
             && n.projection.valid
-            && n.projection.gap < (n.changes == 0 ? gap_tolerance : -gap_tolerance)
-            && n.changes < parameters.max_status_changes)
+            && n.projection.gap < (n.changes == 0 ? gap_tolerance : -gap_tolerance))
           switch_status(n, closing_status(n));
       }
       if (n.status != ContactStatus::open)
@@ -659,6 +662,16 @@ namespace ausroll::contact
         n_slip += n.status == ContactStatus::slip ? 1 : 0;
       }
     return {Utilities::MPI::sum(n_stick, comm), Utilities::MPI::sum(n_slip, comm)};
+  }
+
+  template <int dim>
+  unsigned int ContactOperator<dim>::n_changed_statuses() const
+  {
+    unsigned int changed = 0;
+    for (const Node &n : nodes)
+      if (n.owned && n.status != n.c_status)
+        ++changed;
+    return Utilities::MPI::sum(changed, comm);
   }
 
   namespace

@@ -40,6 +40,76 @@ namespace ausroll::scene
       return false;
     }
 
+    /**
+     * Range of the volume change J = det F over the quadrature points of the converged state, with
+     * the points where the extremes lie (same on all ranks). Plastic flow is isochoric and the
+     * elastic volume change of metals is below 1 %, so J far from 1 at a point means that the
+     * element is folding, not that the material is compressed (F-bar leaves the pointwise J free
+     * and only the cell mean physical).
+     */
+    template <int dim>
+    struct VolumeChangeRange
+    {
+      double     min_J = std::numeric_limits<double>::max();
+      double     max_J = 0.;
+      Point<dim> where_min, where_max;
+    };
+
+    template <int dim>
+    VolumeChangeRange<dim> volume_change_range(const Mapping<dim>                     &mapping,
+                                               const DoFHandler<dim>                  &dof_handler,
+                                               const Quadrature<dim>                  &quadrature,
+                                               const mechanics::PlanarKinematics<dim> &kinematics,
+                                               const TrilinosWrappers::MPI::Vector    &u)
+    {
+      VolumeChangeRange<dim>           range;
+      FEValues<dim>                    fe_values(mapping,
+                              dof_handler.get_fe(),
+                              quadrature,
+                              update_values | update_gradients | update_quadrature_points);
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<2, dim>>      grad_u(quadrature.size());
+      std::vector<Tensor<1, dim>>      u_values(quadrature.size());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_gradients(u, grad_u);
+          fe_values[displacement].get_function_values(u, u_values);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+          {
+            const Point<dim> &X = fe_values.quadrature_point(q);
+            const double      J
+                = determinant(kinematics.deformation_gradient(grad_u[q], u_values[q], X));
+            if (J < range.min_J)
+            {
+              range.min_J = J;
+              range.where_min = X;
+            }
+            if (J > range.max_J)
+            {
+              range.max_J = J;
+              range.where_max = X;
+            }
+          }
+        }
+      // the extremes and their places from the rank that holds them
+      const MPI_Comm     comm = dof_handler.get_communicator();
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+      const double       global_min = Utilities::MPI::min(range.min_J, comm);
+      const double       global_max = Utilities::MPI::max(range.max_J, comm);
+      const unsigned int min_rank
+          = Utilities::MPI::min(range.min_J == global_min ? rank : n_ranks, comm);
+      const unsigned int max_rank
+          = Utilities::MPI::min(range.max_J == global_max ? rank : n_ranks, comm);
+      range.where_min = Utilities::MPI::broadcast(comm, range.where_min, min_rank);
+      range.where_max = Utilities::MPI::broadcast(comm, range.where_max, max_rank);
+      range.min_J = global_min;
+      range.max_J = global_max;
+      return range;
+    }
+
     std::string format_seconds(const double s)
     {
       std::ostringstream out;
@@ -795,11 +865,15 @@ namespace ausroll::scene
       if (contact.close_touching_nodes() > 0)
         contact.promote_statuses();
     }
+    // A step that fails with the predictor is first tried again from the converged state (the
+    // extrapolation overshoots where the path turns: a fold-over corner, a node reaching a die).
+    bool predict
+        = loading.predictor == solver::Predictor::linear_extrapolation && last_step_size > 0.;
     for (;;)
     {
       time = t_start + dt;
       solution = step_start;
-      if (loading.predictor == solver::Predictor::linear_extrapolation && last_step_size > 0.)
+      if (predict)
       {
         // u_n + (dt / dt_prev) (u_n - u_n-1)
         const double ratio = dt / last_step_size;
@@ -810,6 +884,14 @@ namespace ausroll::scene
       newton_log << "  step " << step_number + 1 << ", t = " << time << std::endl;
       result = newton.solve(*this, newton_log);
 
+      if (!result.converged && predict)
+      {
+        predict = false;
+        contact.reset();
+        log << "  step " << step_number + 1 << " (t = " << time << "): " << result.reason
+            << "; trying again without the predictor" << std::endl;
+        continue;
+      }
       if (!result.converged)
       {
         ++cutbacks;
@@ -822,6 +904,9 @@ namespace ausroll::scene
           time = t_start;
           solution = step_start;
           solution_ghosted = solution;
+          // node positions and gaps of the converged state, not of the failed iterate
+          contact.set_time(time);
+          contact.update_geometry(solution_ghosted, false);
           write_output();
           std::ostringstream msg;
           msg << "load step " << step_number + 1 << " (t = " << t_start + dt
@@ -829,6 +914,8 @@ namespace ausroll::scene
               << " cutbacks: " << result.reason << ". The last converged state (step "
               << step_number << ", t = " << t_start << ") is in " << parameters.output.directory
               << "/";
+          if (!distortion_warning.empty())
+            msg << ". Earlier, " << distortion_warning;
           throw RunFailure(msg.str());
         }
         dt *= 0.5;
@@ -863,6 +950,38 @@ namespace ausroll::scene
       dt *= alpha;
       newton_log << "      contact: next status change at alpha = " << alpha
                  << ", step reduced to dt = " << dt << std::endl;
+    }
+  }
+
+  template <int dim>
+  void Scene<dim>::check_distortion()
+  {
+    const double limit = parameters.loading.volume_change_limit;
+    if (limit <= 0. || !distortion_warning.empty())
+      return;
+    const VolumeChangeRange<dim> range = volume_change_range(
+        mapping, dof_handler, assembler->quadrature(), kinematics, solution_ghosted);
+    newton_log << "  volume change J = det F in [" << range.min_J << " at (" << range.where_min
+               << "), " << range.max_J << " at (" << range.where_max << ")]" << std::endl;
+    if (range.min_J >= limit && range.max_J <= 1. / limit)
+      return;
+    const bool         low = range.min_J < limit;
+    std::ostringstream msg;
+    msg << "the mesh folds: J = det F = " << (low ? range.min_J : range.max_J)
+        << " at the quadrature point (" << (low ? range.where_min : range.where_max)
+        << ") (reference coordinates) in step " << step_number << ", t = " << time
+        << " (Loading/Volume change limit = " << limit
+        << "); forces from here on are not mesh-converged. Refine the mesh there (Geometry/"
+           "Refinement point, Local refinements), let Adaptivity refine it, or let the folding "
+           "surface touch the die (Contact/Die N/Candidate boundaries)";
+    distortion_warning = msg.str();
+    log << "  warning: " << distortion_warning << std::endl;
+    if (parameters.loading.stop_at_distortion)
+    {
+      write_output();
+      throw RunFailure(distortion_warning + " (Loading/Stop at distorted mesh = true). The state "
+                       + "of step " + std::to_string(step_number) + " is in "
+                       + parameters.output.directory + "/");
     }
   }
 
@@ -933,6 +1052,7 @@ namespace ausroll::scene
       const double         t_start = t_done;
       solve_step(t_start, dt_try, result, cutbacks);
       dt_try = time - t_start;
+      const unsigned int status_changes = contact.active() ? contact.n_changed_statuses() : 0;
 
       commit_step();
       last_step_size = dt_try;
@@ -977,6 +1097,8 @@ namespace ausroll::scene
           line << " " << entry.first << "=" << (std::abs(entry.second) < 1e-12 ? 0. : entry.second);
       regression_log << line.str() << std::endl;
 
+      check_distortion();
+
       if (parameters.adaptivity.interval > 0 && step_number % parameters.adaptivity.interval == 0
           && t_done < t_end * (1. - 1e-12))
         adapt_mesh(std::min(t_end, t_done + dt));
@@ -993,7 +1115,20 @@ namespace ausroll::scene
         std::_Exit(99);
       }
 
-      dt = cutbacks > 0 ? dt_try : std::min(nominal_dt, dt * loading.step_growth_factor);
+      if (loading.step_control == solver::StepControl::adaptive)
+      {
+        // From the step actually taken after a cutback, else from the size asked for (a step
+        // shortened to end on the nominal grid says nothing about the size that works).
+        double factor = loading.step_factor(result.iterations, status_changes);
+        if (cutbacks > 0)
+          factor = std::min(factor, 1.);
+        dt = std::min(nominal_dt, (cutbacks > 0 ? dt_try : dt) * factor);
+        newton_log << "  step control: " << result.iterations << " Newton iterations, "
+                   << status_changes << " contact status changes, " << cutbacks
+                   << " cutbacks: next dt = " << dt << std::endl;
+      }
+      else
+        dt = cutbacks > 0 ? dt_try : std::min(nominal_dt, dt * loading.step_growth_factor);
     }
     write_output();
 

@@ -1,6 +1,8 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/solver/loading_parameters.h>
 
+#include <algorithm>
+
 namespace ausroll::solver
 {
   using namespace dealii;
@@ -31,7 +33,63 @@ namespace ausroll::solver
         "extrapolation of the last step's displacement increment, scaled to the step size. "
         "Extrapolation saves many iterations in large rotations of slender bodies, where the "
         "first iterate from the converged state carries large spurious membrane forces.");
+    prm.declare_entry(
+        "Step control",
+        "halving",
+        Patterns::Selection("halving|adaptive"),
+        "halving: a failing step is halved (Maximum cutbacks), every later step grows by Step "
+        "growth factor up to the nominal size. adaptive: in addition, the size of the next step "
+        "follows the last converged step: it shrinks by Target Newton iterations / iterations "
+        "(or Target status changes / contact status changes) when the step needed more, grows "
+        "by Step growth factor only after an easy step (at most half of both targets) and stays "
+        "otherwise; after a cutback it does not grow. Steps never exceed the nominal size and "
+        "still end on the nominal grid (doc/scenes/hard_cases.md).");
+    prm.declare_entry("Target Newton iterations",
+                      "6",
+                      Patterns::Integer(1, 100),
+                      "Step control = adaptive: Newton iterations per step aimed at.");
+    prm.declare_entry("Target status changes",
+                      "4",
+                      Patterns::Integer(0, 100000),
+                      "Step control = adaptive: contact status changes (nodes closing, opening, "
+                      "switching stick/slip) per step aimed at; 0: not used.");
+    prm.declare_entry("Minimum step factor",
+                      "0.25",
+                      Patterns::Double(0.01, 1.),
+                      "Step control = adaptive: the next step is at least this fraction of the "
+                      "last one.");
+    prm.declare_entry(
+        "Volume change limit",
+        "0.2",
+        Patterns::Double(0., 1.),
+        "After every converged step the volume change J = det F at the quadrature points is "
+        "checked: plastic flow is isochoric and the elastic volume change of metals below 1 %, "
+        "so J < limit or J > 1 / limit means that an element folds (e.g. the corner of an "
+        "upsetting where the free surface rolls onto the platen). The run then warns once, "
+        "naming the place and the time, and the failure message of a later step repeats it; "
+        "forces from that time on are not mesh-converged. 0: no check.");
+    prm.declare_entry("Stop at distorted mesh",
+                      "false",
+                      Patterns::Bool(),
+                      "Stop the run (exit status 3, last converged state written) instead of "
+                      "warning when the Volume change limit is crossed.");
     prm.leave_subsection();
+  }
+
+  double LoadingParameters::step_factor(const unsigned int newton_iterations,
+                                        const unsigned int status_changes) const
+  {
+    double factor = 1.;
+    if (newton_iterations > target_newton_iterations)
+      factor = double(target_newton_iterations) / newton_iterations;
+    if (target_status_changes > 0 && status_changes > target_status_changes)
+      factor = std::min(factor, double(target_status_changes) / status_changes);
+    if (factor < 1.)
+      return std::max(factor, minimum_step_factor);
+    const bool easy_iterations = 2 * newton_iterations <= target_newton_iterations;
+    const bool easy_contact
+        = target_status_changes == 0 || 2 * status_changes <= target_status_changes;
+    return easy_iterations && easy_contact ? step_growth_factor : 1.;
   }
 
   void LoadingParameters::parse_parameters(ParameterHandler &prm)
@@ -42,6 +100,13 @@ namespace ausroll::solver
     max_cutbacks = prm.get_integer("Maximum cutbacks");
     step_growth_factor = prm.get_double("Step growth factor");
     predictor = prm.get("Predictor") == "none" ? Predictor::none : Predictor::linear_extrapolation;
+    step_control
+        = prm.get("Step control") == "adaptive" ? StepControl::adaptive : StepControl::halving;
+    target_newton_iterations = prm.get_integer("Target Newton iterations");
+    target_status_changes = prm.get_integer("Target status changes");
+    minimum_step_factor = prm.get_double("Minimum step factor");
+    volume_change_limit = prm.get_double("Volume change limit");
+    stop_at_distortion = prm.get_bool("Stop at distorted mesh");
     prm.leave_subsection();
     require(end_time > 0., "Loading/End time", "must be positive");
     require(steps > 0, "Loading/Number of steps", "must be at least 1");

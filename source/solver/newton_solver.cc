@@ -150,6 +150,9 @@ namespace ausroll::solver
               && std::abs(problem.increment_residual_product()) <= 0.8 * std::abs(slope)
               && std::isfinite(problem.residual_norm()))
             break;
+          log << "      eta " << step << ": " << (admissible ? "" : "inadmissible, ")
+              << "|r| = " << problem.residual_norm() << ", d.r ratio "
+              << problem.increment_residual_product() / slope << std::endl;
           step *= 0.5;
           problem.apply_increment(step);
           admissible = problem.assemble(true, message);

@@ -455,14 +455,16 @@ ausroll_add_check(NAME indentation_elastic_hertz
        --youngs-modulus 210000 --poissons-ratio 0.3 --tol 0.01)
 # Elastic-plastic indentation to d = 0.25 mm: the punch force rises strictly with the depth, and
 # from d = 0.15 mm (a >= 1.4 mm, fully plastic: E a / (sigma_y R) >= 40) the mean pressure F / a
-# is within 12 % of the flat-punch limit (2 + pi) k = 2077.95 MPa (Prandtl, an independent
-# slip-line result). Why 12 %: a is the extent of the closed nodes, which moves in jumps of the
-# node spacing (0.16 mm, up to 10 % of a), and a cylinder is not exactly flat; observed 0.91-0.98
-# (also on the full run to d = 1 mm: doc/scenes/indentation.md).
+# is within 15 % of the flat-punch limit (2 + pi) k = 2077.95 MPa (Prandtl, an independent
+# slip-line result). Why 15 %: a is the extent of the closed nodes, which moves in jumps of the
+# node spacing (0.16 mm, up to 10 % of a), and a cylinder is not exactly flat; observed 0.91-0.98,
+# and 0.859 at d = 0.16 mm, just before the next node closes (a = 1.576 mm, then 1.741 mm), since
+# a node that used up its status changes closes when it penetrates (issue 17; it was left open
+# inside the punch before, doc/scenes/hard_cases.md).
 ausroll_add_check(NAME indentation_force_depth
   PRM ${CMAKE_CURRENT_BINARY_DIR}/indentation_half.prm
   CHECK ${AUSROLL_CHECKS_DIR}/check_indentation.py
-  ARGS out/history.csv --yield-stress 700 --from-depth 0.15 --tol 0.12)
+  ARGS out/history.csv --yield-stress 700 --from-depth 0.15 --tol 0.15)
 # np = 2 gives the np = 1 history of the elastic-plastic frictional indentation to 1e-8.
 ausroll_add_parallel_check(NAME indentation_np2
   PRM ${CMAKE_CURRENT_BINARY_DIR}/indentation_short.prm HISTORY out/history.csv)
@@ -532,3 +534,12 @@ execute_process(COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/scripts/prm_va
   COMMAND_ERROR_IS_FATAL ANY)
 ausroll_add_parallel_check(NAME gear_rolling_adaptive_short_np2
   PRM ${_gear_adaptive_np2} HISTORY out/history.csv)
+
+# ---------------------------------------------------------------- hard cases (issue 17)
+# Short versions of the hard cases past the point where they failed before the fixes
+# (doc/scenes/hard_cases.md): the punch on its coarsest mesh to 1 mm (<= 2 cutbacks, force within
+# 5 % of the three-mesh extrapolation, 2k <= F/a <= (2 + pi) k), upsetting with the platen on the
+# top face only to 25 % with the warning that the corner folds, upsetting as shipped with median
+# <= 3 Newton iterations (force within 2 % of Q2 16x12), indentation to t = 0.75 with <= 2
+# cutbacks (Prandtl within 15 %). Reasons of each tolerance in the script. About 40 s of CPU.
+ausroll_add_script_check(NAME hard_cases SCRIPT ${AUSROLL_CHECKS_DIR}/check_hard_cases.py)

@@ -213,6 +213,10 @@ namespace ausroll::contact
     void fill_output_vectors(dealii::TrilinosWrappers::MPI::Vector &pressure_traction,
                              dealii::TrilinosWrappers::MPI::Vector &status_gap) const;
 
+    /** Nodes whose status differs from the committed one (global): the status changes of the
+        step being solved, for the step-size control (`Loading/Step control`). */
+    unsigned int n_changed_statuses() const;
+
     /** Numbers of sticking and of slipping nodes (global, all dies), for the status line. */
     std::pair<unsigned int, unsigned int> n_stick_slip() const;
 

@@ -91,6 +91,9 @@ namespace ausroll::scene
                       double                dt,
                       solver::NewtonResult &result,
                       unsigned int         &cutbacks);
+    /** After a converged step: warn (or stop, `Loading/Stop at distorted mesh`) the first time
+        the volume change at a quadrature point crosses `Loading/Volume change limit`. */
+    void check_distortion();
     /** Write VTU output of the current (converged) state. */
     void write_output();
     /**
@@ -161,9 +164,11 @@ namespace ausroll::scene
     solver::LinearSolver<dim> linear_solver;
     solver::NewtonSolver      newton;
 
-    double       time = 0.;           ///< pseudo-time of the current iterate
-    double       last_step_size = 0.; ///< size of the last converged step (predictor)
-    unsigned int step_number = 0;     ///< converged steps so far
+    double time = 0.;           ///< pseudo-time of the current iterate
+    double last_step_size = 0.; ///< size of the last converged step (predictor)
+    /** First crossing of `Loading/Volume change limit` (where, when), empty while none. */
+    std::string  distortion_warning;
+    unsigned int step_number = 0; ///< converged steps so far
     unsigned int output_counter = 0;
     int          last_output_step = -1;
 

@@ -1,0 +1,106 @@
+#!/usr/bin/env python3
+"""Hard cases of issue 17 on mesh sequences (doc/scenes/hard_cases.md, doc/benchmarks.md):
+
+  punch      prm/hard_punch.prm, Local refinements = 2, 3, 4 (cells of 0.625, 0.31, 0.156 mm
+             under the punch), to d = 1 mm;
+  upsetting  prm/upsetting.prm (platen contact on the top face and the free surface, F-bar) with
+             the predictor and the adaptive step control, Q2 8 x 6, 16 x 12, 32 x 24, to 30 %.
+
+With --old the same meshes run with the stepping of before (Step control = halving, Predictor =
+none, Contact/Strategy = active set). Prints one Markdown row per run (steps, cutbacks, Newton
+iterations per step: median and max, CPU seconds, force) and, where three meshes finished, the
+Richardson extrapolation of the force with the observed order. No pass/fail: the assertions on
+the short versions are in tests/checks/check_hard_cases.py.
+
+Usage: hard_cases.py --ausroll build/ausroll --work DIR [--old] [--cases punch upsetting]
+"""
+
+import argparse
+import csv
+import math
+import os
+import resource
+import statistics
+import subprocess
+import sys
+
+SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+
+CASES = {
+    "punch": ("hard_punch.prm", "die_punch_force_y", 1.0, [
+        ("refinements 2", ["Geometry/Local refinements = 2"]),
+        ("refinements 3", ["Geometry/Local refinements = 3"]),
+        ("refinements 4", ["Geometry/Local refinements = 4"])]),
+    "upsetting": ("upsetting.prm", "die_platen_force_y", 1e-3, [
+        ("8 x 6", ["Geometry/Rectangle/Cells = 8, 6"]),
+        ("16 x 12", ["Geometry/Rectangle/Cells = 16, 12"]),
+        ("32 x 24", ["Geometry/Rectangle/Cells = 32, 24"])]),
+}
+NEW = {"punch": [], "upsetting": ["Loading/Predictor = linear extrapolation",
+                                  "Loading/Step control = adaptive"]}
+OLD = ["Loading/Step control = halving", "Loading/Predictor = none",
+       "Contact/Strategy = active set"]
+
+
+def run(ausroll, work, name, base, overrides):
+    prm = os.path.join(work, name + ".prm")
+    out = os.path.join(work, name)
+    subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "prm_variant.py"),
+                    os.path.join(SOURCE, "prm", base), prm, f"Output/Directory = {out}",
+                    "Output/Write VTU = false", "Output/Verbosity = normal"] + overrides,
+                   check=True)
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    with open(out + ".log", "w") as log:
+        status = subprocess.run([ausroll, prm, "--overwrite"], stdout=log, stderr=subprocess.STDOUT).returncode
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    with open(os.path.join(out, "history.csv")) as f:
+        rows = list(csv.DictReader(f))[1:]
+    with open(out + ".log") as f:
+        warned = any("warning: the mesh folds" in line for line in f)
+    return status, rows, cpu, warned
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("--ausroll", required=True)
+    p.add_argument("--work", required=True)
+    p.add_argument("--old", action="store_true")
+    p.add_argument("--cases", nargs="+", default=list(CASES))
+    a = p.parse_args()
+    os.makedirs(a.work, exist_ok=True)
+    print("| case | mesh | status | end | steps | cutbacks | Newton median / max | CPU s | force | "
+          "fold warning |")
+    print("|---|---|---|---:|---:|---:|---:|---:|---:|---|")
+    for case in a.cases:
+        base, column, scale, meshes = CASES[case]
+        forces = []
+        for label, overrides in meshes:
+            name = f"{case}_{label.replace(' ', '')}" + ("_old" if a.old else "")
+            status, rows, cpu, warned = run(a.ausroll, a.work, name, base,
+                                            overrides + (OLD if a.old else NEW[case]))
+            newton = [int(float(r["newton_iterations"])) for r in rows]
+            cutbacks = sum(int(float(r["cutbacks"])) for r in rows)
+            force = -scale * float(rows[-1][column]) if rows else float("nan")
+            end = float(rows[-1]["time"]) if rows else 0.
+            if status == 0:
+                forces.append(force)
+            print(f"| {case}{' (old)' if a.old else ''} | {label} | {status} | {end:.4g} | "
+                  f"{len(rows)} | {cutbacks} | {statistics.median(newton) if newton else 0} / "
+                  f"{max(newton) if newton else 0} | {cpu:.0f} | {force:.1f} | "
+                  f"{'yes' if warned else 'no'} |", flush=True)
+        ratio = ((forces[1] - forces[0]) / (forces[2] - forces[1])
+                 if len(forces) == 3 and forces[2] != forces[1] else 0.)
+        if len(forces) == 3 and ratio > 1:
+            order = math.log(ratio) / math.log(2)
+            extrapolated = forces[2] + (forces[2] - forces[1]) / (ratio - 1)
+            print(f"\n{case}: monotone, observed order {order:.2f}, extrapolated force "
+                  f"{extrapolated:.1f} +- {abs(extrapolated - forces[2]):.1f}\n")
+        elif len(forces) == 3:
+            print(f"\n{case}: forces {', '.join(f'{f:.1f}' for f in forces)}: the differences "
+                  f"do not shrink with the mesh (ratio {ratio:.2f}), no extrapolation\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
