@@ -625,26 +625,8 @@ namespace ausroll::mechanics
   }
 
   template <int dim>
-  AssemblyStatus Assembler<dim>::assemble(const DoFHandler<dim>               &dof_handler,
-                                          const TrilinosWrappers::MPI::Vector &solution,
-                                          const double                         time,
-                                          MaterialPointStorage<dim>           &material_points,
-                                          const AffineConstraints<double>     &hanging,
-                                          const AffineConstraints<double>     &newton,
-                                          const RowTransforms<dim>            *row_transforms,
-                                          const AssemblyTargets               &targets) const
+  void Assembler<dim>::fill_setup(Setup &setup) const
   {
-    Assert(targets.residual != nullptr && targets.external_force != nullptr, ExcInternalError());
-
-    Setup setup;
-    setup.solution = &solution;
-    setup.time = time;
-    setup.material_points = &material_points;
-    setup.hanging = &hanging;
-    setup.newton = &newton;
-    setup.row_transforms = row_transforms;
-    setup.targets = &targets;
-    setup.need_matrix = targets.matrix != nullptr;
     setup.small_strain = model.is_small_strain();
     setup.f_bar = locking == VolumetricLocking::f_bar;
     setup.cell_average = fe.degree > 1;
@@ -669,6 +651,30 @@ namespace ausroll::mechanics
     setup.alpha = 1. / setup.n_vol;
     for (unsigned int d = 0; d < setup.n_vol; ++d)
       setup.E[d][d] = 1.;
+  }
+
+  template <int dim>
+  AssemblyStatus Assembler<dim>::assemble(const DoFHandler<dim>               &dof_handler,
+                                          const TrilinosWrappers::MPI::Vector &solution,
+                                          const double                         time,
+                                          MaterialPointStorage<dim>           &material_points,
+                                          const AffineConstraints<double>     &hanging,
+                                          const AffineConstraints<double>     &newton,
+                                          const RowTransforms<dim>            *row_transforms,
+                                          const AssemblyTargets               &targets) const
+  {
+    Assert(targets.residual != nullptr && targets.external_force != nullptr, ExcInternalError());
+
+    Setup setup;
+    fill_setup(setup);
+    setup.solution = &solution;
+    setup.time = time;
+    setup.material_points = &material_points;
+    setup.hanging = &hanging;
+    setup.newton = &newton;
+    setup.row_transforms = row_transforms;
+    setup.targets = &targets;
+    setup.need_matrix = targets.matrix != nullptr;
 
     // The cell loop on the threads of DEAL_II_NUM_THREADS (step-44): the worker fills one cell's
     // CopyData, the copier adds it to the targets in cell order.
@@ -749,74 +755,34 @@ namespace ausroll::mechanics
       const typename DoFHandler<dim>::active_cell_iterator &cell,
       const TrilinosWrappers::MPI::Vector                  &solution) const
   {
-    FEValues<dim> fe_values(mapping,
-                            fe,
-                            cell_quadrature,
-                            update_values | update_gradients | update_quadrature_points
-                                | update_JxW_values);
-    fe_values.reinit(cell);
-    const unsigned int               n_q = cell_quadrature.size();
+    Setup setup;
+    fill_setup(setup);
+    setup.solution = &solution;
+    setup.check_inversion = false;
+    ScratchData                      scratch(mapping, fe, cell_quadrature, face_quadrature);
+    CopyData                         copy(setup.n_dofs);
     const FEValuesExtractors::Vector displacement(0);
-    std::vector<Tensor<2, dim>>      grad_u(n_q);
-    std::vector<Tensor<1, dim>>      u(n_q);
-    fe_values[displacement].get_function_gradients(solution, grad_u);
-    fe_values[displacement].get_function_values(solution, u);
-    std::vector<Tensor<2, 3>> F(n_q);
-    for (unsigned int q = 0; q < n_q; ++q)
-      F[q] = kinematics.deformation_gradient(grad_u[q], u[q], fe_values.quadrature_point(q));
-    if (locking != VolumetricLocking::f_bar)
+    scratch.fe_values.reinit(cell);
+    scratch.fe_values[displacement].get_function_gradients(solution, scratch.grad_u);
+    scratch.fe_values[displacement].get_function_values(solution, scratch.u_values);
+    std::vector<Tensor<2, 3>> F(setup.n_q);
+    for (unsigned int q = 0; q < setup.n_q; ++q)
+      F[q] = kinematics.deformation_gradient(
+          scratch.grad_u[q], scratch.u_values[q], scratch.fe_values.quadrature_point(q));
+    if (!setup.f_bar)
       return F;
 
-    // J0 and tr(F0 - I) as in assemble(): at the centre (Q1) or averaged over the cell
-    double J0 = 0., trace_H0 = 0.;
-    if (fe.degree == 1)
-    {
-      Point<dim> unit_center;
-      for (unsigned int d = 0; d < dim; ++d)
-        unit_center[d] = 0.5;
-      FEValues<dim> fe_center(mapping,
-                              fe,
-                              Quadrature<dim>(unit_center),
-                              update_values | update_gradients | update_quadrature_points);
-      fe_center.reinit(cell);
-      std::vector<Tensor<2, dim>> g0(1);
-      std::vector<Tensor<1, dim>> u0(1);
-      fe_center[displacement].get_function_gradients(solution, g0);
-      fe_center[displacement].get_function_values(solution, u0);
-      const Tensor<2, 3> F0
-          = kinematics.deformation_gradient(g0[0], u0[0], fe_center.quadrature_point(0));
-      J0 = determinant(F0);
-      trace_H0 = trace(F0) - 3.;
-    }
-    else
-    {
-      double volume = 0.;
-      for (unsigned int q = 0; q < n_q; ++q)
-      {
-        const double dV
-            = fe_values.JxW(q) * kinematics.volume_factor(fe_values.quadrature_point(q));
-        volume += dV;
-        J0 += determinant(F[q]) * dV;
-        trace_H0 += (trace(F[q]) - 3.) * dV;
-      }
-      J0 /= volume;
-      trace_H0 /= volume;
-    }
-    const unsigned int n_vol = kinematics.volumetric_dimensions(fe.degree > 1);
-    const double       alpha = 1. / n_vol;
-    for (unsigned int q = 0; q < n_q; ++q)
-      if (model.is_small_strain())
-      {
-        const double shift = alpha * (trace_H0 - (trace(F[q]) - 3.));
-        for (unsigned int d = 0; d < n_vol; ++d)
-          F[q][d][d] += shift;
-      }
+    // the F-bar reference (J0, tr(F0 - I)) and scaling of assemble_cell()
+    f_bar_reference(cell, setup, scratch, copy);
+    for (unsigned int q = 0; q < setup.n_q; ++q)
+      if (setup.small_strain)
+        F[q] += (setup.alpha * (scratch.trace_H0 - (trace(F[q]) - 3.))) * setup.E;
       else
       {
-        const double s = std::pow(J0 / determinant(F[q]), alpha);
-        for (unsigned int a = 0; a < n_vol; ++a)
-          for (unsigned int b = 0; b < n_vol; ++b)
-            F[q][a][b] *= s;
+        const double s = std::pow(scratch.J0 / determinant(F[q]), setup.alpha);
+        for (unsigned int i = 0; i < setup.n_vol; ++i)
+          for (unsigned int j = 0; j < setup.n_vol; ++j)
+            F[q][i][j] *= s;
       }
     return F;
   }

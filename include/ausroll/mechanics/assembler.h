@@ -164,6 +164,9 @@ namespace ausroll::mechanics
     /** Friction row transforms on the rows of the cell's nodes (residual and tangent). */
     void apply_row_transforms(const Setup &setup, CopyData &copy) const;
 
+    /** The call-independent part of @p setup: flags, shape-function tables, F-bar n and E. */
+    void fill_setup(Setup &setup) const;
+
     /** Add one cell to the targets (serial, in cell order: the WorkStream copier). */
     void copy_local_to_global(const CopyData &copy, const Setup &setup) const;
 
