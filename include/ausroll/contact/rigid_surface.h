@@ -1,0 +1,88 @@
+/**
+ * @file rigid_surface.h
+ * The dimension-generic interface of an analytic rigid die surface (2D curve or 3D surface),
+ * given in the die's LOCAL frame. The die's pose(t) (DieMotion) maps it to global coordinates.
+ *
+ * Conventions (hold for every shape, 2D and 3D):
+ * - The outward unit normal n points from the die material INTO the space where the workpiece
+ *   is. Signed gap g = (x - x_proj) . n: positive outside the die (open), negative inside
+ *   (penetration). Wherever a projection is returned, x = x_proj + g n holds exactly (also at
+ *   edges, corners and ends, where n is +-(x - x_proj)/|x - x_proj|).
+ * - Tangents: dim - 1 orthonormal unit vectors orthogonal to n.
+ *   2D: t = n rotated by -90 degrees, t = (n_y, -n_x) (the direction of travel of a DieSurface
+ *   chain, die material on its right).
+ *   3D: (t_1, t_2, n) is a right-handed orthonormal basis, t_1 x t_2 = n; t_1 is the first
+ *   surface-coordinate direction where the shape has one (documented per shape).
+ * - Curvatures: principal curvature along each tangent, positive for a convex die (centre of
+ *   curvature inside the die material), negative for a concave one, 0 on flat parts, edges and
+ *   corners.
+ * - Surface coordinates: dim - 1 numbers naming the closest point on the surface (2D: arc length
+ *   s along the chain; 3D: documented per shape, e.g. axial position and arc length). They are
+ *   continuous along the surface where the shape has a natural parametrisation.
+ */
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <array>
+#include <limits>
+#include <string>
+
+namespace ausroll::contact
+{
+  /**
+   * Result of RigidSurface::project() for a point x (all in the die's local frame).
+   */
+  template <int dim>
+  struct SurfaceProjection
+  {
+    /** False if no surface point lies within the requested search distance (other fields unset). */
+    bool valid = false;
+    /** Closest point x_proj of the surface. */
+    dealii::Point<dim> point;
+    /** Signed gap g = (x - x_proj) . n: > 0 open, < 0 penetration. */
+    double gap = 0.0;
+    /** Distance |x - x_proj| = |g|. */
+    double distance = 0.0;
+    /** Outward unit normal n (die -> workpiece). */
+    dealii::Tensor<1, dim> normal;
+    /** Orthonormal tangents (see the file documentation for their orientation). */
+    std::array<dealii::Tensor<1, dim>, dim - 1> tangents;
+    /** Principal curvature along each tangent (positive = convex die). */
+    std::array<double, dim - 1> curvatures{};
+    /** Surface coordinates of x_proj (2D: arc length s). */
+    std::array<double, dim - 1> coordinates{};
+    /**
+     * True if x_proj lies on an edge, a corner or a joint between pieces of the surface (the
+     * normal is then +-(x - x_proj)/|x - x_proj|).
+     */
+    bool at_edge = false;
+    /** True if x_proj lies on the boundary of an open (finite) surface: a contact algorithm may
+        release such points. */
+    bool at_end = false;
+  };
+
+  /**
+   * An analytic rigid surface in the die's local frame. One class per shape; each shape has its
+   * own `.prm` subsection and one factory line. See the file documentation for the conventions.
+   */
+  template <int dim>
+  class RigidSurface
+  {
+  public:
+    virtual ~RigidSurface() = default;
+
+    /** Shape name as in the `.prm` selection (e.g. "circle", "torus"). */
+    virtual std::string name() const = 0;
+
+    /**
+     * Closest point of the surface to @p x (local frame), with gap, normal, tangents, curvatures
+     * and surface coordinates. If no surface point lies within @p max_distance the result has
+     * valid == false.
+     */
+    virtual SurfaceProjection<dim> project(const dealii::Point<dim> &x,
+                                           double                    max_distance
+                                           = std::numeric_limits<double>::infinity()) const = 0;
+  };
+} // namespace ausroll::contact
