@@ -1,0 +1,114 @@
+#include <ausroll/contact/surfaces/extruded_profile.h>
+#include <ausroll/core/exceptions.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ausroll::contact::surfaces
+{
+  using namespace dealii;
+
+  ExtrudedProfile::ExtrudedProfile(const DieSurface   &profile,
+                                   const double        z0,
+                                   const double        z1,
+                                   const bool          caps,
+                                   const Point<3>     &origin,
+                                   const Tensor<1, 3> &axis,
+                                   const Tensor<1, 3> &reference)
+      : chain(profile)
+      , z_lo(z0)
+      , z_hi(z1)
+      , with_caps(caps)
+      , frame(origin, axis, reference)
+  {
+    if (!(z0 < z1))
+      throw EntryError("End z", "must be larger than Start z");
+    if (caps && !(std::isfinite(z0) && std::isfinite(z1)))
+      throw EntryError("End caps", "needs a finite extrusion (Start z and End z)");
+  }
+
+  SurfaceProjection<3> ExtrudedProfile::project(const Point<3> &x, const double max_distance) const
+  {
+    const Point<3> xi = frame.to_canonical(x);
+    const double   z = xi[2], zc = std::clamp(z, z_lo, z_hi);
+    // With caps a point inside the prism may be near a cap and far from the mantle: the full 2D
+    // projection is needed to know whether (x, y) lies on the material side.
+    const Projection q = chain.project(
+        Point<2>(xi[0], xi[1]), with_caps ? std::numeric_limits<double>::infinity() : max_distance);
+    if (!q.valid)
+      return SurfaceProjection<3>();
+
+    const Tensor<1, 3> n2({q.normal[0], q.normal[1], 0.});
+    const Tensor<1, 3> t2({q.tangent[0], q.tangent[1], 0.});
+    Tensor<1, 3>       e3;
+    e3[2] = 1.;
+    // signed axial distance to [z0, z1] (> 0 beyond an end, <= 0 within) and the nearer end
+    const double dz = std::max(z - z_hi, z_lo - z);
+    const double sz = z - z_hi > z_lo - z ? 1. : -1.;
+
+    SurfaceProjection<3> p;
+    p.coordinates = {{zc, q.s}};
+    p.curvatures = {{0., 0.}};
+    auto on_mantle = [&]()
+    {
+      p.point = Point<3>(q.point[0], q.point[1], z);
+      p.normal = n2;
+      p.gap = q.gap;
+      p.tangents = {{e3, t2}};
+      p.curvatures = {{0., q.curvature}};
+      p.at_edge = q.at_corner || q.at_end;
+      p.at_end = q.at_end;
+    };
+    auto on_cap = [&]()
+    {
+      const double zs = sz > 0. ? z_hi : z_lo;
+      p.point = Point<3>(xi[0], xi[1], zs);
+      p.normal = sz * e3;
+      p.gap = sz * (z - zs);
+      Tensor<1, 3> ex, ey;
+      ex[0] = 1.;
+      ey[1] = 1.;
+      p.tangents
+          = sz > 0. ? std::array<Tensor<1, 3>, 2>{{ex, ey}} : std::array<Tensor<1, 3>, 2>{{ey, ex}};
+      p.coordinates[0] = zs;
+    };
+    auto on_end_line = [&](const bool outside)
+    {
+      // a cap edge or an open end: x - x_proj is normal to the edge line
+      p.point = Point<3>(q.point[0], q.point[1], zc);
+      const Tensor<1, 3> v = xi - p.point;
+      const double       dist = v.norm();
+      p.gap = outside ? dist : -dist;
+      p.normal = v / p.gap;
+      p.tangents = {{cross_product_3d(t2, p.normal), t2}};
+      p.at_edge = true;
+    };
+
+    if (dz <= 0.)
+    {
+      // within [z0, z1]
+      if (with_caps && q.gap <= 0. && dz > q.gap)
+        on_cap();
+      else
+        on_mantle();
+    }
+    else if (with_caps)
+    {
+      if (q.gap <= 0.)
+        on_cap();
+      else
+        on_end_line(true);
+    }
+    else
+    {
+      on_end_line(q.gap >= 0.);
+      p.at_end = true;
+    }
+    p.distance = std::abs(p.gap);
+    if (!(p.distance <= max_distance))
+      return SurfaceProjection<3>();
+    p.valid = true;
+    frame.to_local(p);
+    return p;
+  }
+} // namespace ausroll::contact::surfaces

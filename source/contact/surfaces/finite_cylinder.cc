@@ -1,0 +1,90 @@
+#include <ausroll/contact/surfaces/finite_cylinder.h>
+#include <ausroll/core/exceptions.h>
+
+#include <deal.II/base/numbers.h>
+
+#include <cmath>
+
+namespace ausroll::contact::surfaces
+{
+  using namespace dealii;
+
+  FiniteCylinder::FiniteCylinder(const Point<3>     &center,
+                                 const Tensor<1, 3> &axis,
+                                 const double        radius,
+                                 const double        width,
+                                 const double        edge_radius,
+                                 const Tensor<1, 3> &reference)
+      : frame(center, axis, reference)
+      , R(radius)
+      , h(0.5 * width)
+      , re(edge_radius)
+  {
+    if (!(radius > 0.) || !std::isfinite(radius))
+      throw EntryError("Radius", "must be positive");
+    if (!(width > 0.) || !std::isfinite(width))
+      throw EntryError("Width", "must be positive");
+    if (!(edge_radius >= 0.) || edge_radius > radius || edge_radius > h)
+      throw EntryError("Edge radius", "must lie in [0, min(Radius, Width / 2)]");
+  }
+
+  MeridianProjection FiniteCylinder::project_meridian(const double r, const double z) const
+  {
+    const double a = R - re, b = h - re; // the inner box [0, a] x [-b, b]
+    const double v = std::abs(z), sz = z >= 0. ? 1. : -1.;
+    const double quarter = 0.5 * numbers::PI * re;
+    // s at the start of the mantle and at the start of the lower rim
+    const double s_mantle = a + quarter, s_lower = s_mantle + 2. * b;
+
+    MeridianProjection m;
+    auto               face = [&]()
+    {
+      m.point = Point<2>(r, sz * h);
+      m.normal = Tensor<1, 2>({0., sz});
+      m.gap = v - h;
+      m.s = sz > 0. ? r : s_lower + quarter + (a - r);
+    };
+    auto mantle = [&]()
+    {
+      m.point = Point<2>(R, z);
+      m.normal = Tensor<1, 2>({1., 0.});
+      m.gap = r - R;
+      m.s = s_mantle + (b - z);
+    };
+    if (r > a && v > b)
+    {
+      // rim: around the corner centre (a, sz b)
+      const double dr = r - a, dv = v - b, d = std::hypot(dr, dv);
+      m.normal = Tensor<1, 2>({dr / d, sz * dv / d});
+      m.point = Point<2>(a + re * m.normal[0], sz * b + re * m.normal[1]);
+      m.gap = d - re;
+      const double alpha = std::atan2(dr, dv); // from the face (0) to the mantle (pi / 2)
+      m.s = sz > 0. ? a + re * alpha : s_lower + re * (0.5 * numbers::PI - alpha);
+      if (re > 0.)
+        m.curvature = 1. / re;
+      else
+        m.at_edge = true;
+    }
+    else if (r > a)
+      mantle();
+    else if (v > b)
+      face();
+    else if (R - r <= h - v)
+      mantle(); // inside the core: the nearer flat part
+    else
+      face();
+    return m;
+  }
+
+  SurfaceProjection<3> FiniteCylinder::project(const Point<3> &x, const double max_distance) const
+  {
+    const Point<3>           xi = frame.to_canonical(x);
+    const double             r = std::hypot(xi[0], xi[1]);
+    const MeridianProjection m = project_meridian(r, xi[2]);
+    if (!(std::abs(m.gap) <= max_distance))
+      return SurfaceProjection<3>();
+    SurfaceProjection<3> p = revolve_meridian_projection(xi, m, 1e-14 * (R + h));
+    frame.to_local(p);
+    return p;
+  }
+} // namespace ausroll::contact::surfaces

@@ -1,0 +1,88 @@
+#include <ausroll/contact/surfaces/revolved_profile.h>
+#include <ausroll/core/exceptions.h>
+
+#include <cmath>
+
+namespace ausroll::contact::surfaces
+{
+  using namespace dealii;
+
+  RevolvedProfile::RevolvedProfile(const DieSurface   &profile,
+                                   const Point<3>     &center,
+                                   const Tensor<1, 3> &axis,
+                                   const Tensor<1, 3> &reference)
+      : chain(profile)
+      , frame(center, axis, reference)
+  {
+    double size = 0.;
+    for (unsigned int i = 0; i < chain.n_segments(); ++i)
+    {
+      const DieSegment &seg = chain.segment(i);
+      if (!seg.is_bounded())
+      {
+        // an infinite line must run parallel to the axis at r >= 0
+        const Point<2>     p = seg.point(0.);
+        const Tensor<1, 2> t = seg.tangent(0.);
+        if (std::abs(t[0]) > 1e-12 || p[0] < 0.)
+          throw EntryError("Profile/Points",
+                           "an infinite profile line must be parallel to the axis, at r >= 0");
+        size = std::max(size, std::abs(p[0]));
+        continue;
+      }
+      size = std::max({size,
+                       std::abs(seg.bounding_box_min()[0]),
+                       std::abs(seg.bounding_box_max()[0]),
+                       std::abs(seg.bounding_box_min()[1]),
+                       std::abs(seg.bounding_box_max()[1])});
+    }
+    axis_tolerance = 1e-10 * std::max(size, 1e-300);
+    for (unsigned int i = 0; i < chain.n_segments(); ++i)
+      if (chain.segment(i).is_bounded() && chain.segment(i).bounding_box_min()[0] < -axis_tolerance)
+      {
+        // the bounding box of an arc is that of its points: check finely
+        const DieSegment  &seg = chain.segment(i);
+        const unsigned int n = 64;
+        for (unsigned int k = 0; k <= n; ++k)
+          if (seg.point(seg.u_begin() + seg.length() * k / n)[0] < -axis_tolerance)
+            throw EntryError("Profile/Points",
+                             "the profile must lie in the half plane r >= 0 (its x coordinate "
+                             "is the distance from the axis)");
+      }
+  }
+
+  SurfaceProjection<3> RevolvedProfile::project(const Point<3> &x, const double max_distance) const
+  {
+    const Point<3>   xi = frame.to_canonical(x);
+    const Projection q = chain.project(Point<2>(std::hypot(xi[0], xi[1]), xi[2]), max_distance);
+    if (!q.valid)
+      return SurfaceProjection<3>();
+    MeridianProjection m;
+    m.point = q.point;
+    m.normal = q.normal;
+    m.gap = q.gap;
+    m.curvature = q.curvature;
+    m.s = q.s;
+    m.at_edge = q.at_corner;
+    m.at_end = q.at_end;
+    if (q.at_end && std::abs(q.point[0]) <= axis_tolerance)
+    {
+      // an end on the axis: a smooth point if the profile meets the axis at a right angle (a face
+      // through the axis), else a vertex (an edge)
+      const bool         first = q.s <= chain.s_begin() + axis_tolerance;
+      const DieSegment  &seg = chain.segment(first ? 0 : chain.n_segments() - 1);
+      const double       u = first ? seg.u_begin() : seg.u_end();
+      const Tensor<1, 2> n = seg.normal(u);
+      m.at_end = false;
+      m.at_edge = std::abs(n[0]) > 1e-10;
+      if (!m.at_edge)
+      {
+        m.normal = n;
+        m.gap = (Point<2>(std::hypot(xi[0], xi[1]), xi[2]) - q.point) * n;
+        m.curvature = seg.curvature(u);
+      }
+    }
+    SurfaceProjection<3> p = revolve_meridian_projection(xi, m, axis_tolerance);
+    frame.to_local(p);
+    return p;
+  }
+} // namespace ausroll::contact::surfaces
