@@ -58,7 +58,10 @@ namespace ausroll::mechanics
    * (with the F-bar helper), a face-load part and a row-transform part run per cell by
    * dealii::WorkStream on `DEAL_II_NUM_THREADS` threads (scratch and copy data), and a copier that
    * adds each cell to the Trilinos targets through AffineConstraints::distribute_local_to_global
-   * in cell order, so the sums are the serial ones whatever the number of threads. The 3D embedding
+   * in cell order, so the sums are the serial ones whatever the number of threads (the worker is
+   * assemble_one_cell(): assemble_cell() with the F-bar helper f_bar_reference() / f_bar_point() /
+   * add_f_bar_tangent(), assemble_face_loads(), apply_row_transforms(); each part has its own
+   * scratch data: CellScratch, FBarScratch, FaceScratch). The 3D embedding
    * of the planar model comes from PlanarKinematics; surface loads from BoundaryConditions.
    *
    * Surface loads: `traction` conditions are dead loads per reference area. `pressure` conditions
