@@ -13,24 +13,9 @@
  * norms of residual and matrix are printed with 17 digits: equal for any number of threads (the
  * copier adds the cells in order).
  */
-#include <ausroll/material/constitutive_model.h>
-#include <ausroll/mechanics/assembler.h>
-#include <ausroll/mechanics/boundary_conditions.h>
-#include <ausroll/mechanics/planar_kinematics.h>
+#include "support/assembler_test_problem.h"
 
-#include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 
 #include <sys/resource.h>
 
@@ -97,58 +82,16 @@ int main(int argc, char **argv)
   const unsigned int               n_assemblies = argc > 2 ? std::atoi(argv[2]) : 20;
   MultithreadInfo::set_thread_limit(n_threads);
 
-  Triangulation<2> tria;
-  GridGenerator::subdivided_hyper_rectangle(
-      tria, {64, 32}, Point<2>(0., 0.), Point<2>(20., 10.), /*colorize=*/true);
-  FESystem<2>   fe(FE_Q<2>(2), 2);
-  MappingQ<2>   mapping(2);
-  DoFHandler<2> dof_handler(tria);
-  dof_handler.distribute_dofs(fe);
-  const unsigned int n = dof_handler.n_dofs();
-
-  material::MaterialParameters mat;
-  mat.yield_stress = 240.;
-  mat.hardening_modulus = 1000.;
-  const auto model
-      = material::create_constitutive_model(material::KinematicsType::finite_strain, mat, false);
-  mechanics::BoundaryConditionParameters bc_parameters;
-  mechanics::BoundaryCondition           pressure;
-  pressure.id = 3;
-  pressure.type = mechanics::BoundaryConditionType::pressure;
-  pressure.value = "300 * (1 + 0.01 * x)";
-  bc_parameters.conditions = {pressure};
-  const mechanics::BoundaryConditions<2> bcs(bc_parameters);
-  const mechanics::PlanarKinematics<2>   kinematics(mechanics::PlanarModel::plane_strain, 1.);
-  const mechanics::Assembler<2>          assembler(
-      mapping, fe, 3, kinematics, *model, bcs, mechanics::VolumetricLocking::f_bar);
-  mechanics::MaterialPointStorage<2> points;
-  points.initialize(tria.begin_active(), tria.end(), assembler.quadrature().size());
-
-  const IndexSet            all = complete_index_set(n);
-  AffineConstraints<double> none;
-  none.close();
-  DynamicSparsityPattern dsp(n, n);
-  DoFTools::make_sparsity_pattern(dof_handler, dsp);
-  TrilinosWrappers::SparseMatrix matrix;
-  matrix.reinit(all, all, dsp, MPI_COMM_WORLD);
-  TrilinosWrappers::MPI::Vector u(all, MPI_COMM_WORLD), residual(all, MPI_COMM_WORLD),
-      external(all, MPI_COMM_WORLD), rhs(all, MPI_COMM_WORLD);
+  test_support::AssemblerTestProblem<2> problem(
+      test_support::plastic_block_under_pressure("300 * (1 + 0.01 * x)"),
+      test_support::rectangle({64, 32}, Point<2>(0., 0.), Point<2>(20., 10.)));
+  const unsigned int n = problem.n_dofs();
   for (unsigned int i = 0; i < n; ++i)
-    u[i] = 0.02 * std::sin(0.37 * i); // a plastic, distorted state
+    problem.u[i] = 0.02 * std::sin(0.37 * i); // a plastic, distorted state
 
   auto assemble = [&]()
   {
-    residual = 0.;
-    external = 0.;
-    matrix = 0.;
-    rhs = 0.;
-    mechanics::AssemblyTargets targets;
-    targets.residual = &residual;
-    targets.external_force = &external;
-    targets.matrix = &matrix;
-    targets.rhs = &rhs;
-    const auto status
-        = assembler.assemble(dof_handler, u, 1., points, none, none, nullptr, targets);
+    const auto status = problem.assemble(problem.u, true);
     if (!status.ok)
     {
       std::printf("assembly failed: %s\n", status.message.c_str());
@@ -178,7 +121,7 @@ int main(int argc, char **argv)
   std::printf("threads %u (MultithreadInfo::n_threads() = %u), %u cells, %u DoFs, %u assemblies\n",
               n_threads,
               MultithreadInfo::n_threads(),
-              tria.n_active_cells(),
+              problem.tria.n_active_cells(),
               n,
               n_assemblies);
   std::printf("per assembly: wall %.1f ms, process CPU %.1f ms\n",
@@ -188,7 +131,8 @@ int main(int argc, char **argv)
               sum,
               longest,
               longest > 0. ? sum / longest : 0.);
-  std::printf(
-      "|residual| = %.17g, |matrix|_F = %.17g\n", residual.l2_norm(), matrix.frobenius_norm());
+  std::printf("|residual| = %.17g, |matrix|_F = %.17g\n",
+              problem.residual.l2_norm(),
+              problem.matrix.frobenius_norm());
   return 0;
 }

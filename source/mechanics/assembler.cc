@@ -54,6 +54,20 @@ namespace ausroll::mechanics
         l += F_inv[J][c] * grad[J];
       return l;
     }
+
+    /** G_i : M for a 3x3 @p M, G_i the 3D gradient of a shape function of component @p c with
+        in-plane gradient @p g and hoop entry @p hoop. */
+    template <int dim>
+    double contract(const Tensor<2, 3>            &M,
+                    const unsigned int             c,
+                    const std::array<double, dim> &g,
+                    const double                   hoop)
+    {
+      double sum = M[2][2] * hoop;
+      for (unsigned int J = 0; J < dim; ++J)
+        sum += M[c][J] * g[J];
+      return sum;
+    }
   } // namespace
 
   template <int dim>
@@ -94,49 +108,82 @@ namespace ausroll::mechanics
     std::string message;
     // the boundary-condition functions keep their time in the object: one thread at a time
     mutable std::mutex load_mutex;
+    // the copier's work vector (-r of the free equations of one cell)
+    Vector<double> cell_rhs;
   };
 
   template <int dim>
-  struct Assembler<dim>::ScratchData
+  struct Assembler<dim>::FBarPoint
   {
-    ScratchData(const Mapping<dim>        &mapping,
-                const FiniteElement<dim>  &fe,
-                const Quadrature<dim>     &cell_quadrature,
-                const Quadrature<dim - 1> &face_quadrature)
+    Tensor<2, 3> F_material; // F_bar (F without F-bar)
+    double       s = 1.;     // F_bar = s F (in the scaled block; 1 for small strain)
+    double       kappa = 1.; // P = kappa P(F_bar), kappa = s^(1 - n)
+    Tensor<2, 3> F_inv;      // F^-1 (large strain with F-bar; else zero)
+  };
+
+  // The scratch data of the parts (WorkStream copies the whole ScratchData once per thread;
+  // FEValues cannot be copied, so each part is rebuilt from the element, mapping and quadrature).
+
+  template <int dim>
+  struct Assembler<dim>::CellScratch
+  {
+    CellScratch(const Mapping<dim>       &mapping,
+                const FiniteElement<dim> &fe,
+                const Quadrature<dim>    &quadrature)
         : fe_values(mapping,
                     fe,
-                    cell_quadrature,
+                    quadrature,
                     update_values | update_gradients | update_quadrature_points | update_JxW_values)
-        , fe_face_values(mapping,
-                         fe,
-                         face_quadrature,
-                         update_values | update_gradients | update_quadrature_points
-                             | update_normal_vectors | update_JxW_values)
-        , fe_center(mapping,
-                    fe,
-                    Quadrature<dim>(cell_center()),
-                    update_values | update_gradients | update_quadrature_points)
-        , grad_u(cell_quadrature.size())
-        , grad_u_face(face_quadrature.size())
-        , grad_u_center(1)
-        , u_values(cell_quadrature.size())
-        , u_face(face_quadrature.size())
-        , u_center(1)
+        , grad_u(quadrature.size())
+        , u_values(quadrature.size())
         , g(fe.n_dofs_per_cell())
         , hoop(fe.n_dofs_per_cell(), 0.)
         , h(fe.n_dofs_per_cell())
         , h_hoop(fe.n_dofs_per_cell(), 0.)
+    {
+    }
+
+    CellScratch(const CellScratch &other)
+        : CellScratch(other.fe_values.get_mapping(),
+                      other.fe_values.get_fe(),
+                      other.fe_values.get_quadrature())
+    {
+    }
+
+    FEValues<dim>               fe_values;
+    std::vector<Tensor<2, dim>> grad_u;   // Grad u at the quadrature points
+    std::vector<Tensor<1, dim>> u_values; // u at the quadrature points
+    // The 3D gradient G_i = dF/du_i of each shape function (3x3): row c_i holds the in-plane
+    // gradient, g[i][J] = dF[c_i][J] / du_i (J < dim), and axisymmetric models add the hoop entry
+    // hoop[i] = dF[2][2] / du_i = phi_i / R for the radial component (c_i = 0).
+    std::vector<std::array<double, dim>> g;
+    std::vector<double>                  hoop;
+    // h[j][c][I] = (A : G_j)[c][I] for c, I < dim and h_hoop[j] = (A : G_j)[2][2]
+    std::vector<std::array<std::array<double, dim>, dim>> h;
+    std::vector<double>                                   h_hoop;
+    // stress P = kappa P(F_bar), the material's stress P(F_bar) and its tangent A
+    Tensor<2, 3> P, P_bar;
+    Tensor<4, 3> A;
+  };
+
+  template <int dim>
+  struct Assembler<dim>::FBarScratch
+  {
+    FBarScratch(const Mapping<dim> &mapping, const FiniteElement<dim> &fe)
+        : fe_center(mapping,
+                    fe,
+                    Quadrature<dim>(cell_center()),
+                    update_values | update_gradients | update_quadrature_points)
+        , grad_u_center(1)
+        , u_center(1)
         , dlnJ0(fe.n_dofs_per_cell())
         , dlnJ(fe.n_dofs_per_cell())
         , q_coefficient(fe.n_dofs_per_cell())
     {
     }
 
-    ScratchData(const ScratchData &other)
-        : ScratchData(other.fe_values.get_mapping(),
-                      other.fe_values.get_fe(),
-                      other.fe_values.get_quadrature(),
-                      other.fe_face_values.get_quadrature())
+    FBarScratch(const FBarScratch &other)
+        : FBarScratch(other.fe_center.get_mapping(), other.fe_center.get_fe())
     {
     }
 
@@ -148,29 +195,60 @@ namespace ausroll::mechanics
       return unit_center;
     }
 
-    FEValues<dim>     fe_values;
-    FEFaceValues<dim> fe_face_values;
-    FEValues<dim>     fe_center; // F-bar: values and gradients at the cell centre
-
-    std::vector<Tensor<2, dim>> grad_u, grad_u_face, grad_u_center;
-    std::vector<Tensor<1, dim>> u_values, u_face, u_center;
-
-    // The 3D gradient G_i = dF/du_i of each shape function (3x3): row c_i holds the in-plane
-    // gradient, g[i][J] = dF[c_i][J] / du_i (J < dim), and axisymmetric models add the hoop entry
-    // hoop[i] = dF[2][2] / du_i = phi_i / R for the radial component (c_i = 0).
-    std::vector<std::array<double, dim>> g;
-    std::vector<double>                  hoop;
-    // h[j][c][I] = (A : G_j)[c][I] for c, I < dim and h_hoop[j] = (A : G_j)[2][2]
-    std::vector<std::array<std::array<double, dim>, dim>> h;
-    std::vector<double>                                   h_hoop;
-    // F-bar: d ln J0 / du_j at the centre, d ln J / du_j at the point (tr G for small strain), and
-    // the coefficients q_i of the rank-one cell-centre term of the tangent
+    FEValues<dim>               fe_center; // values and gradients at the cell centre (Q1)
+    std::vector<Tensor<2, dim>> grad_u_center;
+    std::vector<Tensor<1, dim>> u_center;
+    // d ln J0 / du_j of the reference, d ln J / du_j at the point (tr G for small strain), and
+    // the coefficients q_i of the rank-one reference term of the tangent
     std::vector<double> dlnJ0, dlnJ, q_coefficient;
-    // F-bar reference of the current cell: J0, tr(F0 - I)
+    // the reference of the current cell: J0, tr(F0 - I)
     double J0 = 1., trace_H0 = 0.;
+  };
 
-    Tensor<2, 3> P, P_bar;
-    Tensor<4, 3> A;
+  template <int dim>
+  struct Assembler<dim>::FaceScratch
+  {
+    FaceScratch(const Mapping<dim>        &mapping,
+                const FiniteElement<dim>  &fe,
+                const Quadrature<dim - 1> &quadrature)
+        : fe_face_values(mapping,
+                         fe,
+                         quadrature,
+                         update_values | update_gradients | update_quadrature_points
+                             | update_normal_vectors | update_JxW_values)
+        , grad_u_face(quadrature.size())
+        , u_face(quadrature.size())
+    {
+    }
+
+    FaceScratch(const FaceScratch &other)
+        : FaceScratch(other.fe_face_values.get_mapping(),
+                      other.fe_face_values.get_fe(),
+                      other.fe_face_values.get_quadrature())
+    {
+    }
+
+    FEFaceValues<dim>           fe_face_values;
+    std::vector<Tensor<2, dim>> grad_u_face; // follower pressure: Grad u and u on the face
+    std::vector<Tensor<1, dim>> u_face;
+  };
+
+  template <int dim>
+  struct Assembler<dim>::ScratchData
+  {
+    ScratchData(const Mapping<dim>        &mapping,
+                const FiniteElement<dim>  &fe,
+                const Quadrature<dim>     &cell_quadrature,
+                const Quadrature<dim - 1> &face_quadrature)
+        : cell(mapping, fe, cell_quadrature)
+        , f_bar(mapping, fe)
+        , face(mapping, fe, face_quadrature)
+    {
+    }
+
+    CellScratch cell;
+    FBarScratch f_bar;
+    FaceScratch face;
   };
 
   template <int dim>
@@ -181,13 +259,12 @@ namespace ausroll::mechanics
         , cell_residual(n_dofs)
         , cell_external(n_dofs)
         , cell_free(n_dofs)
-        , cell_rhs(n_dofs)
         , dofs(n_dofs)
     {
     }
 
     FullMatrix<double>                   cell_matrix;
-    Vector<double>                       cell_residual, cell_external, cell_free, cell_rhs;
+    Vector<double>                       cell_residual, cell_external, cell_free;
     std::vector<types::global_dof_index> dofs;
     bool                                 ok = true;
     double                               min_jacobian = 1e300;
@@ -200,11 +277,14 @@ namespace ausroll::mechanics
     }
   };
 
+  // ------------------------------------------------------------------ F-bar helper
+
   template <int dim>
   bool Assembler<dim>::f_bar_reference(const typename DoFHandler<dim>::active_cell_iterator &cell,
                                        const Setup                                          &setup,
-                                       ScratchData &scratch,
-                                       CopyData    &copy) const
+                                       const CellScratch &cell_scratch,
+                                       FBarScratch       &scratch,
+                                       CopyData          &copy) const
   {
     const FEValuesExtractors::Vector displacement(0);
     const std::vector<unsigned int> &component = setup.component;
@@ -251,7 +331,7 @@ namespace ausroll::mechanics
 
     // Q2 and higher: volume average over the cell (mean dilatation), J0 = int J dV / V
     // (small strain: the average of tr(F - I)); d ln J0 / du_j = int J tr(F^-1 G_j) dV / (V J0)
-    const FEValues<dim> &fe_values = scratch.fe_values;
+    const FEValues<dim> &fe_values = cell_scratch.fe_values;
     double               volume = 0.;
     J0 = 0.;
     std::fill(dlnJ0.begin(), dlnJ0.end(), 0.);
@@ -260,7 +340,7 @@ namespace ausroll::mechanics
       const Point<dim>  &X = fe_values.quadrature_point(q);
       const double       dV = fe_values.JxW(q) * kinematics.volume_factor(X);
       const Tensor<2, 3> F
-          = kinematics.deformation_gradient(scratch.grad_u[q], scratch.u_values[q], X);
+          = kinematics.deformation_gradient(cell_scratch.grad_u[q], cell_scratch.u_values[q], X);
       const double       J = determinant(F);
       const double       weight = small_strain ? dV : J * dV;
       const Tensor<2, 3> F_inv = small_strain ? Tensor<2, 3>() : invert(F);
@@ -291,42 +371,94 @@ namespace ausroll::mechanics
   }
 
   template <int dim>
+  typename Assembler<dim>::FBarPoint Assembler<dim>::f_bar_point(const Setup        &setup,
+                                                                 const FBarScratch  &scratch,
+                                                                 const Tensor<2, 3> &F,
+                                                                 const double        J) const
+  {
+    FBarPoint point;
+    point.F_material = F;
+    if (setup.small_strain)
+      point.F_material += (setup.alpha * (scratch.trace_H0 - (trace(F) - 3.))) * setup.E;
+    else
+    {
+      point.s = std::pow(scratch.J0 / J, setup.alpha);
+      point.kappa = std::pow(point.s, 1. - setup.n_vol);
+      for (unsigned int a = 0; a < setup.n_vol; ++a)
+        for (unsigned int b = 0; b < setup.n_vol; ++b)
+          point.F_material[a][b] *= point.s;
+      point.F_inv = invert(F);
+    }
+    return point;
+  }
+
+  template <int dim>
+  void Assembler<dim>::add_f_bar_tangent(const Setup        &setup,
+                                         const FBarPoint    &point,
+                                         const Tensor<2, 3> &F,
+                                         const double        dV,
+                                         const CellScratch  &cell_scratch,
+                                         FBarScratch        &scratch,
+                                         FullMatrix<double> &cell_matrix) const
+  {
+    // d F_bar / du_j = s G_j + alpha s (d ln J0 - d ln J) E F (large strain) or
+    // G_j + alpha (tr G0_j - tr G_j) E (small strain); d kappa / du_j = (alpha - 1)
+    // kappa (d ln J0 - d ln J). The terms in (d ln J0 - d ln J) form the rank-one matrix
+    // q_i (dlnJ0_j - dlnJ_j) with q_i = G_i : Qt dV,
+    // Qt = kappa [(alpha - 1) P_bar + alpha s A : (E F)] (small strain: alpha A : E).
+    const bool          small_strain = setup.small_strain;
+    const double        alpha = setup.alpha;
+    const double        s = point.s, kappa = point.kappa;
+    const Tensor<2, 3> &P_bar = cell_scratch.P_bar;
+    const Tensor<4, 3> &A = cell_scratch.A;
+    Tensor<2, 3>        Qt;
+    const Tensor<2, 3>  EF = small_strain ? setup.E : setup.E * F;
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int b = 0; b < 3; ++b)
+      {
+        double sum = 0.;
+        for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int l = 0; l < 3; ++l)
+            sum += A[a][b][k][l] * EF[k][l];
+        Qt[a][b]
+            = small_strain ? alpha * sum : kappa * ((alpha - 1.) * P_bar[a][b] + alpha * s * sum);
+      }
+    for (unsigned int i = 0; i < setup.n_dofs; ++i)
+    {
+      const unsigned int c = setup.component[i];
+      scratch.q_coefficient[i] = contract<dim>(Qt, c, cell_scratch.g[i], cell_scratch.hoop[i]) * dV;
+      scratch.dlnJ[i] = volume_change_rate<dim>(
+          small_strain, point.F_inv, c, cell_scratch.g[i], cell_scratch.hoop[i]);
+    }
+    for (unsigned int i = 0; i < setup.n_dofs; ++i)
+      for (unsigned int j = 0; j < setup.n_dofs; ++j)
+        cell_matrix(i, j) += scratch.q_coefficient[i] * (scratch.dlnJ0[j] - scratch.dlnJ[j]);
+  }
+
+  // ------------------------------------------------------------------ cell part
+
+  template <int dim>
   void Assembler<dim>::assemble_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
                                      const Setup                                          &setup,
-                                     ScratchData                                          &scratch,
-                                     CopyData &copy) const
+                                     CellScratch                                          &scratch,
+                                     FBarScratch &f_bar_scratch,
+                                     CopyData    &copy) const
   {
     const FEValuesExtractors::Vector displacement(0);
     const unsigned int               n_dofs = setup.n_dofs;
     const std::vector<unsigned int> &component = setup.component;
-    const bool                       small_strain = setup.small_strain;
     const bool                       f_bar = setup.f_bar;
     const bool                       axisymmetric = setup.axisymmetric;
     const bool                       need_matrix = setup.need_matrix;
-    const unsigned int               n_vol = setup.n_vol;
-    const double                     alpha = setup.alpha;
-    const Tensor<2, 3>              &E = setup.E;
 
     FEValues<dim> &fe_values = scratch.fe_values;
     auto          &g = scratch.g;
     auto          &hoop = scratch.hoop;
     auto          &h = scratch.h;
     auto          &h_hoop = scratch.h_hoop;
-    auto          &dlnJ0 = scratch.dlnJ0;
-    auto          &dlnJ = scratch.dlnJ;
-    auto          &q_coefficient = scratch.q_coefficient;
     Tensor<2, 3>  &P = scratch.P;
     Tensor<2, 3>  &P_bar = scratch.P_bar;
     Tensor<4, 3>  &A = scratch.A;
-    // G_i : M for a 3x3 M
-    auto contract = [&](const Tensor<2, 3> &M, const unsigned int i)
-    {
-      const unsigned int c = component[i];
-      double             sum = M[2][2] * hoop[i];
-      for (unsigned int J = 0; J < dim; ++J)
-        sum += M[c][J] * g[i][J];
-      return sum;
-    };
 
     fe_values.reinit(cell);
     fe_values[displacement].get_function_gradients(*setup.solution, scratch.grad_u);
@@ -340,12 +472,9 @@ namespace ausroll::mechanics
     FullMatrix<double> &cell_matrix = copy.cell_matrix;
     Vector<double>     &cell_residual = copy.cell_residual;
 
-    // F-bar: the deformation gradient at the cell centre and d(ln J0)/du_j (small strain:
-    // tr(F0 - I) and tr G0_j)
-    if (f_bar && !f_bar_reference(cell, setup, scratch, copy))
+    // F-bar: the reference volume change of the cell and its derivative
+    if (f_bar && !f_bar_reference(cell, setup, scratch, f_bar_scratch, copy))
       return;
-    const double J0 = f_bar ? scratch.J0 : 1.;
-    const double trace_H0 = f_bar ? scratch.trace_H0 : 0.;
 
     for (unsigned int q = 0; q < setup.n_q; ++q)
     {
@@ -373,39 +502,30 @@ namespace ausroll::mechanics
           hoop[i] = fe_values.shape_value_component(i, q, c) / X[0];
       }
 
-      // Deformation gradient seen by the material point; residual stress P_res (P = P(F) or
-      // kappa P(F_bar)) and the factor of the material tangent term.
-      Tensor<2, 3> F_material = F;
-      double       s = 1., kappa = 1.;
-      Tensor<2, 3> F_inv;
+      // Deformation gradient seen by the material point; residual stress P = kappa P(F_bar)
+      // (P(F) without F-bar) and the factor of the material tangent term.
+      FBarPoint point;
       if (f_bar)
-      {
-        if (small_strain)
-          F_material += (alpha * (trace_H0 - (trace(F) - 3.))) * E;
-        else
-        {
-          s = std::pow(J0 / J, alpha);
-          kappa = std::pow(s, 1. - n_vol);
-          for (unsigned int a = 0; a < n_vol; ++a)
-            for (unsigned int b = 0; b < n_vol; ++b)
-              F_material[a][b] *= s;
-          F_inv = invert(F);
-        }
-      }
+        point = f_bar_point(setup, f_bar_scratch, F, J);
+      else
+        point.F_material = F;
       try
       {
-        model.evaluate(
-            F_material, points[q]->committed, points[q]->trial, P_bar, need_matrix ? &A : nullptr);
+        model.evaluate(point.F_material,
+                       points[q]->committed,
+                       points[q]->trial,
+                       P_bar,
+                       need_matrix ? &A : nullptr);
       }
       catch (const RunFailure &e)
       {
         copy.fail(e.what());
         return;
       }
-      P = kappa * P_bar;
+      P = point.kappa * P_bar;
 
       for (unsigned int i = 0; i < n_dofs; ++i)
-        cell_residual(i) += contract(P, i) * dV;
+        cell_residual(i) += contract<dim>(P, component[i], g[i], hoop[i]) * dV;
 
       if (!need_matrix)
         continue;
@@ -428,7 +548,7 @@ namespace ausroll::mechanics
           h_hoop[j] = sum;
         }
       }
-      const double material_factor = kappa * s * dV;
+      const double material_factor = point.kappa * point.s * dV;
       for (unsigned int i = 0; i < n_dofs; ++i)
       {
         const unsigned int c = component[i];
@@ -442,42 +562,17 @@ namespace ausroll::mechanics
       }
 
       if (f_bar)
-      {
-        // d F_bar / du_j = s G_j + alpha s (d ln J0 - d ln J) E F (large strain) or
-        // G_j + alpha (tr G0_j - tr G_j) E (small strain); d kappa / du_j = (alpha - 1)
-        // kappa (d ln J0 - d ln J). The terms in (d ln J0 - d ln J) form the rank-one matrix
-        // q_i (dlnJ0_j - dlnJ_j) with q_i = G_i : Qt dV,
-        // Qt = kappa [(alpha - 1) P_bar + alpha s A : (E F)] (small strain: alpha A : E).
-        Tensor<2, 3>       Qt;
-        const Tensor<2, 3> EF = small_strain ? E : E * F;
-        for (unsigned int a = 0; a < 3; ++a)
-          for (unsigned int b = 0; b < 3; ++b)
-          {
-            double sum = 0.;
-            for (unsigned int k = 0; k < 3; ++k)
-              for (unsigned int l = 0; l < 3; ++l)
-                sum += A[a][b][k][l] * EF[k][l];
-            Qt[a][b] = small_strain ? alpha * sum
-                                    : kappa * ((alpha - 1.) * P_bar[a][b] + alpha * s * sum);
-          }
-        for (unsigned int i = 0; i < n_dofs; ++i)
-        {
-          const unsigned int c = component[i];
-          q_coefficient[i] = contract(Qt, i) * dV;
-          dlnJ[i] = volume_change_rate<dim>(small_strain, F_inv, c, g[i], hoop[i]);
-        }
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          for (unsigned int j = 0; j < n_dofs; ++j)
-            cell_matrix(i, j) += q_coefficient[i] * (dlnJ0[j] - dlnJ[j]);
-      }
+        add_f_bar_tangent(setup, point, F, dV, scratch, f_bar_scratch, cell_matrix);
     }
   }
+
+  // ------------------------------------------------------------------ face-load part
 
   template <int dim>
   void
   Assembler<dim>::assemble_face_loads(const typename DoFHandler<dim>::active_cell_iterator &cell,
                                       const Setup                                          &setup,
-                                      ScratchData                                          &scratch,
+                                      FaceScratch                                          &scratch,
                                       CopyData &copy) const
   {
     const FEValuesExtractors::Vector displacement(0);
@@ -552,6 +647,8 @@ namespace ausroll::mechanics
       }
   }
 
+  // ------------------------------------------------------------------ row-transform part
+
   template <int dim>
   void Assembler<dim>::apply_row_transforms(const Setup &setup, CopyData &copy) const
   {
@@ -595,10 +692,43 @@ namespace ausroll::mechanics
   }
 
   template <int dim>
-  void Assembler<dim>::copy_local_to_global(const CopyData &copy, const Setup &setup_in) const
+  void Assembler<dim>::add_row_transform_offsets(const DoFHandler<dim> &dof_handler,
+                                                 const Setup           &setup) const
+  {
+    // Constant parts of the row transforms (shear friction), once per node by its owner.
+    const RowTransforms<dim> *row_transforms = setup.row_transforms;
+    const AssemblyTargets    &targets = *setup.targets;
+    if (row_transforms == nullptr || (targets.free_residual == nullptr && !setup.need_matrix))
+      return;
+    const IndexSet                      &owned = dof_handler.locally_owned_dofs();
+    Vector<double>                       node_offset(dim);
+    std::vector<types::global_dof_index> node_dofs_global(dim);
+    for (const auto &[key, transform] : *row_transforms)
+    {
+      if (transform.offset.norm_square() == 0. || !owned.is_element(key))
+        continue;
+      for (unsigned int c = 0; c < dim; ++c)
+      {
+        node_offset(c) = transform.offset[c];
+        node_dofs_global[c] = transform.dofs[c];
+      }
+      if (targets.free_residual != nullptr)
+        setup.newton->distribute_local_to_global(
+            node_offset, node_dofs_global, *targets.free_residual);
+      if (setup.need_matrix)
+      {
+        node_offset *= -1.;
+        setup.newton->distribute_local_to_global(node_offset, node_dofs_global, *targets.rhs);
+      }
+    }
+  }
+
+  // ------------------------------------------------------------------ copier
+
+  template <int dim>
+  void Assembler<dim>::copy_local_to_global(const CopyData &copy, Setup &setup) const
   {
     // The copier runs serially and in cell order: it owns the outcome in Setup.
-    Setup &setup = const_cast<Setup &>(setup_in);
     if (!setup.ok)
       return; // after a failure nothing more is added (the assembly is discarded)
     setup.min_jacobian = std::min(setup.min_jacobian, copy.min_jacobian);
@@ -616,13 +746,16 @@ namespace ausroll::mechanics
       setup.newton->distribute_local_to_global(copy.cell_free, copy.dofs, *targets.free_residual);
     if (setup.need_matrix)
     {
-      Vector<double> &cell_rhs = const_cast<CopyData &>(copy).cell_rhs;
+      // -r of the free equations (the copier's own work vector: copies run one at a time)
+      Vector<double> &cell_rhs = setup.cell_rhs;
       cell_rhs = copy.cell_free;
       cell_rhs *= -1.;
       setup.newton->distribute_local_to_global(
           copy.cell_matrix, cell_rhs, copy.dofs, *targets.matrix, *targets.rhs, true);
     }
   }
+
+  // ------------------------------------------------------------------ driver
 
   template <int dim>
   void Assembler<dim>::fill_setup(Setup &setup) const
@@ -651,6 +784,24 @@ namespace ausroll::mechanics
     setup.alpha = 1. / setup.n_vol;
     for (unsigned int d = 0; d < setup.n_vol; ++d)
       setup.E[d][d] = 1.;
+    setup.cell_rhs.reinit(setup.n_dofs);
+  }
+
+  template <int dim>
+  void Assembler<dim>::assemble_one_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                         const Setup &setup,
+                                         ScratchData &scratch,
+                                         CopyData    &copy) const
+  {
+    copy.ok = true;
+    copy.min_jacobian = 1e300;
+    cell->get_dof_indices(copy.dofs);
+    assemble_cell(cell, setup, scratch.cell, scratch.f_bar, copy);
+    if (!copy.ok)
+      return;
+    assemble_face_loads(cell, setup, scratch.face, copy);
+    copy.cell_residual -= copy.cell_external;
+    apply_row_transforms(setup, copy);
   }
 
   template <int dim>
@@ -684,46 +835,12 @@ namespace ausroll::mechanics
         CellFilter(IteratorFilters::LocallyOwnedCell(), dof_handler.end()),
         [this, &setup](const typename DoFHandler<dim>::active_cell_iterator &cell,
                        ScratchData                                          &scratch,
-                       CopyData                                             &copy)
-        {
-          copy.ok = true;
-          copy.min_jacobian = 1e300;
-          cell->get_dof_indices(copy.dofs);
-          assemble_cell(cell, setup, scratch, copy);
-          if (!copy.ok)
-            return;
-          assemble_face_loads(cell, setup, scratch, copy);
-          copy.cell_residual -= copy.cell_external;
-          apply_row_transforms(setup, copy);
-        },
+                       CopyData &copy) { assemble_one_cell(cell, setup, scratch, copy); },
         [this, &setup](const CopyData &copy) { copy_local_to_global(copy, setup); },
         ScratchData(mapping, fe, cell_quadrature, face_quadrature),
         CopyData(setup.n_dofs));
 
-    // Constant parts of the row transforms (shear friction), once per node by its owner.
-    if (row_transforms != nullptr && (targets.free_residual != nullptr || setup.need_matrix))
-    {
-      const IndexSet                      &owned = dof_handler.locally_owned_dofs();
-      Vector<double>                       node_offset(dim);
-      std::vector<types::global_dof_index> node_dofs_global(dim);
-      for (const auto &[key, transform] : *row_transforms)
-      {
-        if (transform.offset.norm_square() == 0. || !owned.is_element(key))
-          continue;
-        for (unsigned int c = 0; c < dim; ++c)
-        {
-          node_offset(c) = transform.offset[c];
-          node_dofs_global[c] = transform.dofs[c];
-        }
-        if (targets.free_residual != nullptr)
-          newton.distribute_local_to_global(node_offset, node_dofs_global, *targets.free_residual);
-        if (setup.need_matrix)
-        {
-          node_offset *= -1.;
-          newton.distribute_local_to_global(node_offset, node_dofs_global, *targets.rhs);
-        }
-      }
-    }
+    add_row_transform_offsets(dof_handler, setup);
 
     targets.residual->compress(VectorOperation::add);
     targets.external_force->compress(VectorOperation::add);
@@ -762,28 +879,21 @@ namespace ausroll::mechanics
     ScratchData                      scratch(mapping, fe, cell_quadrature, face_quadrature);
     CopyData                         copy(setup.n_dofs);
     const FEValuesExtractors::Vector displacement(0);
-    scratch.fe_values.reinit(cell);
-    scratch.fe_values[displacement].get_function_gradients(solution, scratch.grad_u);
-    scratch.fe_values[displacement].get_function_values(solution, scratch.u_values);
+    FEValues<dim>                   &fe_values = scratch.cell.fe_values;
+    fe_values.reinit(cell);
+    fe_values[displacement].get_function_gradients(solution, scratch.cell.grad_u);
+    fe_values[displacement].get_function_values(solution, scratch.cell.u_values);
     std::vector<Tensor<2, 3>> F(setup.n_q);
     for (unsigned int q = 0; q < setup.n_q; ++q)
       F[q] = kinematics.deformation_gradient(
-          scratch.grad_u[q], scratch.u_values[q], scratch.fe_values.quadrature_point(q));
+          scratch.cell.grad_u[q], scratch.cell.u_values[q], fe_values.quadrature_point(q));
     if (!setup.f_bar)
       return F;
 
-    // the F-bar reference (J0, tr(F0 - I)) and scaling of assemble_cell()
-    f_bar_reference(cell, setup, scratch, copy);
+    // the F-bar reference and point scaling of assemble_cell()
+    f_bar_reference(cell, setup, scratch.cell, scratch.f_bar, copy);
     for (unsigned int q = 0; q < setup.n_q; ++q)
-      if (setup.small_strain)
-        F[q] += (setup.alpha * (scratch.trace_H0 - (trace(F[q]) - 3.))) * setup.E;
-      else
-      {
-        const double s = std::pow(scratch.J0 / determinant(F[q]), setup.alpha);
-        for (unsigned int i = 0; i < setup.n_vol; ++i)
-          for (unsigned int j = 0; j < setup.n_vol; ++j)
-            F[q][i][j] *= s;
-      }
+      F[q] = f_bar_point(setup, scratch.f_bar, F[q], determinant(F[q])).F_material;
     return F;
   }
 

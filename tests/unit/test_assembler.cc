@@ -2,27 +2,13 @@
 // every kinematics, with and without F-bar, plane strain and axisymmetric, Q1 and Q2, with the
 // follower pressure (load stiffness) on a deformed, distorted mesh (central finite differences of
 // the residual, column by column).
-#include <ausroll/material/constitutive_model.h>
-#include <ausroll/mechanics/assembler.h>
-#include <ausroll/mechanics/boundary_conditions.h>
-#include <ausroll/mechanics/planar_kinematics.h>
+#include "support/assembler_test_problem.h"
 
-#include <deal.II/base/mpi.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <random>
 
@@ -56,55 +42,35 @@ namespace
    */
   double tangent_error(const Case &c)
   {
-    Triangulation<2> tria;
-    GridGenerator::subdivided_hyper_rectangle(
-        tria, {2, 2}, Point<2>(1., 0.), Point<2>(2.2, 1.1), /*colorize=*/true);
-    for (auto &cell : tria.active_cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
-        if (std::abs(cell->vertex(v)[0] - 1.6) < 1e-12
-            && std::abs(cell->vertex(v)[1] - 0.55) < 1e-12)
-          cell->vertex(v) += Point<2>(0.07, -0.05);
-
-    FESystem<2>   fe(FE_Q<2>(c.degree), 2);
-    MappingQ<2>   mapping(c.degree);
-    DoFHandler<2> dof_handler(tria);
-    dof_handler.distribute_dofs(fe);
-    const unsigned int n = dof_handler.n_dofs();
-
-    material::MaterialParameters mat;
-    mat.youngs_modulus = 1000.;
-    mat.poissons_ratio = 0.3;
-    mat.yield_stress = c.plastic ? 2. : 1e9;
-    mat.hardening_modulus = 50.;
-    mat.kinematic_hardening_modulus = c.plastic ? 30. : 0.;
-    const auto model = material::create_constitutive_model(c.kinematics, mat, false);
-
-    mechanics::BoundaryConditionParameters bc_parameters;
-    mechanics::BoundaryCondition           pressure, traction;
-    pressure.id = 3;
-    pressure.type = mechanics::BoundaryConditionType::pressure;
-    pressure.value = "30 + 5 * x";
-    traction.id = 1;
-    traction.type = mechanics::BoundaryConditionType::traction;
-    traction.value = "4; -3 * y";
-    bc_parameters.conditions = {pressure, traction};
-    const mechanics::BoundaryConditions<2> bcs(bc_parameters);
-    const mechanics::PlanarKinematics<2>   kinematics(c.planar, 1.);
-    const mechanics::Assembler<2>          assembler(
-        mapping, fe, c.degree + 1, kinematics, *model, bcs, c.locking);
-
-    mechanics::MaterialPointStorage<2> points;
-    points.initialize(tria.begin_active(), tria.end(), assembler.quadrature().size());
-
-    const IndexSet            all = complete_index_set(n);
-    AffineConstraints<double> none;
-    none.close();
-    DynamicSparsityPattern dsp(n, n);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp);
-    TrilinosWrappers::SparseMatrix matrix;
-    matrix.reinit(all, all, dsp, MPI_COMM_WORLD);
-    TrilinosWrappers::MPI::Vector u(all, MPI_COMM_WORLD), residual(all, MPI_COMM_WORLD),
-        external(all, MPI_COMM_WORLD), rhs(all, MPI_COMM_WORLD);
+    test_support::AssemblerTestOptions options;
+    options.degree = c.degree;
+    options.mapping_degree = c.degree;
+    options.kinematics = c.kinematics;
+    options.material.youngs_modulus = 1000.;
+    options.material.poissons_ratio = 0.3;
+    options.material.yield_stress = c.plastic ? 2. : 1e9;
+    options.material.hardening_modulus = 50.;
+    options.material.kinematic_hardening_modulus = c.plastic ? 30. : 0.;
+    options.conditions
+        = {test_support::surface_load(3, mechanics::BoundaryConditionType::pressure, "30 + 5 * x"),
+           test_support::surface_load(1, mechanics::BoundaryConditionType::traction, "4; -3 * y")};
+    options.planar = c.planar;
+    options.locking = c.locking;
+    test_support::AssemblerTestProblem<2> problem(
+        options,
+        [](Triangulation<2> &tria)
+        {
+          test_support::rectangle({2, 2}, Point<2>(1., 0.), Point<2>(2.2, 1.1))(tria);
+          for (auto &cell : tria.active_cell_iterators())
+            for (const unsigned int v : cell->vertex_indices())
+              if (std::abs(cell->vertex(v)[0] - 1.6) < 1e-12
+                  && std::abs(cell->vertex(v)[1] - 0.55) < 1e-12)
+                cell->vertex(v) += Point<2>(0.07, -0.05);
+        });
+    const unsigned int                    n = problem.n_dofs();
+    TrilinosWrappers::MPI::Vector        &u = problem.u;
+    const TrilinosWrappers::MPI::Vector  &residual = problem.residual;
+    const TrilinosWrappers::SparseMatrix &matrix = problem.matrix;
 
     std::mt19937                           rng(11);
     std::uniform_real_distribution<double> uniform(-1., 1.);
@@ -113,20 +79,7 @@ namespace
 
     auto assemble = [&](const TrilinosWrappers::MPI::Vector &at, const bool with_matrix)
     {
-      residual = 0.;
-      external = 0.;
-      mechanics::AssemblyTargets targets;
-      targets.residual = &residual;
-      targets.external_force = &external;
-      if (with_matrix)
-      {
-        matrix = 0.;
-        rhs = 0.;
-        targets.matrix = &matrix;
-        targets.rhs = &rhs;
-      }
-      const auto status
-          = assembler.assemble(dof_handler, at, 1., points, none, none, nullptr, targets);
+      const auto status = problem.assemble(at, with_matrix);
       EXPECT_TRUE(status.ok) << status.message;
     };
 
@@ -134,8 +87,8 @@ namespace
     if (c.plastic)
     {
       unsigned int n_plastic = 0;
-      for (const auto &cell : tria.active_cell_iterators())
-        for (const auto &p : points.get_data(cell))
+      for (const auto &cell : problem.tria.active_cell_iterators())
+        for (const auto &p : problem.points.get_data(cell))
           n_plastic += p->trial.equivalent_plastic_strain > 0.;
       EXPECT_GT(n_plastic, 0u) << label(c);
     }

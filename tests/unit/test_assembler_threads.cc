@@ -1,28 +1,15 @@
 /**
  * @file test_assembler_threads.cc
  * The WorkStream cell loop of mechanics::Assembler gives the same residual, external force,
- * free residual, tangent and right-hand side on 2 threads as on 1 (which runs the cells in order,
- * as the former serial loop): exactly equal, tolerance 0, because the copier adds the cells to
- * the global objects in cell order whatever thread computed them. Plastic finite-strain material
+ * free residual, tangent and right-hand side on 2 and on 4 threads as on 1 (which runs the cells
+ * in order, as the former serial loop): exactly equal, tolerance 0, because the copier adds the
+ * cells to the global objects in cell order whatever thread computed them (the sums are the
+ * serial sums term by term, so not even round-off may differ). Plastic finite-strain material
  * with F-bar, follower pressure, and a friction row transform with offset on a surface node.
  */
-#include <ausroll/material/constitutive_model.h>
-#include <ausroll/mechanics/assembler.h>
-#include <ausroll/mechanics/boundary_conditions.h>
-#include <ausroll/mechanics/planar_kinematics.h>
+#include "support/assembler_test_problem.h"
 
 #include <deal.II/base/multithread_info.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 
 #include <gtest/gtest.h>
 
@@ -34,43 +21,13 @@
 using namespace dealii;
 using namespace ausroll;
 
-TEST(AssemblerThreads, TwoThreadsEqualOneThreadExactly)
+TEST(AssemblerThreads, TwoAndFourThreadsEqualOneThreadExactly)
 {
-  Triangulation<2> tria;
-  GridGenerator::subdivided_hyper_rectangle(
-      tria, {12, 6}, Point<2>(0., 0.), Point<2>(4., 2.), /*colorize=*/true);
-  FESystem<2>   fe(FE_Q<2>(2), 2);
-  MappingQ<2>   mapping(2);
-  DoFHandler<2> dof_handler(tria);
-  dof_handler.distribute_dofs(fe);
-  const unsigned int n = dof_handler.n_dofs();
-
-  material::MaterialParameters mat;
-  mat.yield_stress = 240.;
-  mat.hardening_modulus = 1000.;
-  const auto model
-      = material::create_constitutive_model(material::KinematicsType::finite_strain, mat, false);
-  mechanics::BoundaryConditionParameters bc_parameters;
-  mechanics::BoundaryCondition           pressure;
-  pressure.id = 3;
-  pressure.type = mechanics::BoundaryConditionType::pressure;
-  pressure.value = "300 * (1 + 0.1 * x)";
-  bc_parameters.conditions = {pressure};
-  const mechanics::BoundaryConditions<2> bcs(bc_parameters);
-  const mechanics::PlanarKinematics<2>   kinematics(mechanics::PlanarModel::plane_strain, 1.);
-  const mechanics::Assembler<2>          assembler(
-      mapping, fe, 3, kinematics, *model, bcs, mechanics::VolumetricLocking::f_bar);
-  mechanics::MaterialPointStorage<2> points;
-  points.initialize(tria.begin_active(), tria.end(), assembler.quadrature().size());
-
-  const IndexSet            all = complete_index_set(n);
-  AffineConstraints<double> none;
-  none.close();
-  DynamicSparsityPattern dsp(n, n);
-  DoFTools::make_sparsity_pattern(dof_handler, dsp);
-  TrilinosWrappers::MPI::Vector u(all, MPI_COMM_WORLD);
-  for (unsigned int i = 0; i < n; ++i)
-    u[i] = 0.01 * std::sin(0.37 * i);
+  test_support::AssemblerTestProblem<2> problem(
+      test_support::plastic_block_under_pressure("300 * (1 + 0.1 * x)"),
+      test_support::rectangle({12, 6}, Point<2>(0., 0.), Point<2>(4., 2.)));
+  for (unsigned int i = 0; i < problem.n_dofs(); ++i)
+    problem.u[i] = 0.01 * std::sin(0.37 * i);
 
   // a slipping node's row transform (matrix and constant offset) on DoFs 0, 1
   mechanics::RowTransforms<2>     transforms;
@@ -89,28 +46,15 @@ TEST(AssemblerThreads, TwoThreadsEqualOneThreadExactly)
   {
     MultithreadInfo::set_thread_limit(n_threads);
     EXPECT_EQ(MultithreadInfo::n_threads(), n_threads);
-    TrilinosWrappers::SparseMatrix matrix;
-    matrix.reinit(all, all, dsp, MPI_COMM_WORLD);
-    TrilinosWrappers::MPI::Vector residual(all, MPI_COMM_WORLD), external(all, MPI_COMM_WORLD),
-        free(all, MPI_COMM_WORLD), rhs(all, MPI_COMM_WORLD);
-    mechanics::AssemblyTargets targets;
-    targets.residual = &residual;
-    targets.external_force = &external;
-    targets.free_residual = &free;
-    targets.matrix = &matrix;
-    targets.rhs = &rhs;
     const auto status
-        = assembler.assemble(dof_handler, u, 1., points, none, none, &transforms, targets);
+        = problem.assemble(problem.u, problem.targets(true, true), nullptr, &transforms);
     EXPECT_TRUE(status.ok) << status.message;
-    Result r;
-    for (unsigned int i = 0; i < n; ++i)
-    {
-      r.residual.push_back(residual[i]);
-      r.external.push_back(external[i]);
-      r.free.push_back(free[i]);
-      r.rhs.push_back(rhs[i]);
-    }
-    for (const auto &entry : matrix)
+    Result r{test_support::values(problem.residual),
+             test_support::values(problem.external),
+             test_support::values(problem.free_residual),
+             test_support::values(problem.rhs),
+             {}};
+    for (const auto &entry : problem.matrix)
       r.matrix.push_back(entry.value());
     return r;
   };
@@ -121,14 +65,18 @@ TEST(AssemblerThreads, TwoThreadsEqualOneThreadExactly)
   unsetenv("DEAL_II_NUM_THREADS");
   const Result one = run(1);
   const Result two = run(2);
+  const Result four = run(4);
   if (env != nullptr)
     setenv("DEAL_II_NUM_THREADS", saved.c_str(), 1);
   MultithreadInfo::set_thread_limit(1);
-  EXPECT_EQ(one.residual, two.residual);
-  EXPECT_EQ(one.external, two.external);
-  EXPECT_EQ(one.free, two.free);
-  EXPECT_EQ(one.rhs, two.rhs);
-  EXPECT_EQ(one.matrix, two.matrix);
+  for (const Result *other : {&two, &four})
+  {
+    EXPECT_EQ(one.residual, other->residual);
+    EXPECT_EQ(one.external, other->external);
+    EXPECT_EQ(one.free, other->free);
+    EXPECT_EQ(one.rhs, other->rhs);
+    EXPECT_EQ(one.matrix, other->matrix);
+  }
   // the offset was added once: free residual = transformed residual + offset at DoF 0
   EXPECT_NEAR(one.free[0],
               one.residual[0] + 0.3 * one.residual[1] + 2.5,

@@ -3,6 +3,8 @@
 // solver), the linear solver (AMG with six rigid-body modes against the direct solver), the
 // material-point transfer and the VTU writer, each against an analytic or exact reference. No
 // Scene is involved.
+#include "support/assembler_test_problem.h"
+
 #include <ausroll/adaptivity/material_point_transfer.h>
 #include <ausroll/io/solution_writer.h>
 #include <ausroll/material/constitutive_model.h>
@@ -74,35 +76,6 @@ namespace
     }
   }
 
-  /** Zero the targets, then assemble residual and external force, and tangent and right-hand
-      side if @p matrix is given (hanging: no constraints). */
-  mechanics::AssemblyStatus assemble(const mechanics::Assembler<3>       &assembler,
-                                     const DoFHandler<3>                 &dof_handler,
-                                     const TrilinosWrappers::MPI::Vector &u,
-                                     mechanics::MaterialPointStorage<3>  &points,
-                                     const AffineConstraints<double>     &newton,
-                                     TrilinosWrappers::MPI::Vector       &residual,
-                                     TrilinosWrappers::MPI::Vector       &external,
-                                     TrilinosWrappers::SparseMatrix      *matrix = nullptr,
-                                     TrilinosWrappers::MPI::Vector       *rhs = nullptr)
-  {
-    AffineConstraints<double> hanging;
-    hanging.close();
-    residual = 0.;
-    external = 0.;
-    mechanics::AssemblyTargets targets;
-    targets.residual = &residual;
-    targets.external_force = &external;
-    if (matrix != nullptr)
-    {
-      *matrix = 0.;
-      *rhs = 0.;
-      targets.matrix = matrix;
-      targets.rhs = rhs;
-    }
-    return assembler.assemble(dof_handler, u, 1., points, hanging, newton, nullptr, targets);
-  }
-
   material::MaterialParameters elastic_material()
   {
     material::MaterialParameters mat;
@@ -136,35 +109,30 @@ TEST(Dim3, PatchTestAffineDisplacementGivesFaceReactionsOnly)
          {K::small_strain, K::total_lagrangian, K::updated_lagrangian, K::finite_strain})
       for (const L locking : {L::none, L::f_bar})
       {
-        Triangulation<3> tria;
-        make_cube(tria, 2, Tensor<1, 3>({0.06, -0.04, 0.05}));
-        const FESystem<3> fe(FE_Q<3>(degree), 3);
-        const MappingQ<3> mapping(1);
-        DoFHandler<3>     dof_handler(tria);
-        dof_handler.distribute_dofs(fe);
-        const unsigned int n = dof_handler.n_dofs();
-
-        const auto model = material::create_constitutive_model(kin, elastic_material(), false);
-        const mechanics::BoundaryConditions<3> bcs(mechanics::BoundaryConditionParameters{});
-        const mechanics::PlanarKinematics<3>   kinematics(mechanics::PlanarModel::plane_strain, 1.);
-        const mechanics::Assembler<3>          assembler(
-            mapping, fe, degree + 1, kinematics, *model, bcs, locking);
-        mechanics::MaterialPointStorage<3> points;
-        points.initialize(tria.begin_active(), tria.end(), assembler.quadrature().size());
+        test_support::AssemblerTestOptions options;
+        options.degree = degree;
+        options.kinematics = kin;
+        options.material = elastic_material();
+        options.locking = locking;
+        test_support::AssemblerTestProblem<3> problem(
+            options,
+            [](Triangulation<3> &tria) {
+              make_cube(tria, 2, Tensor<1, 3>({0.06, -0.04, 0.05}));
+            });
+        const FESystem<3>                   &fe = problem.fe;
+        const MappingQ<3>                   &mapping = problem.mapping;
+        const DoFHandler<3>                 &dof_handler = problem.dof_handler;
+        const unsigned int                   n = problem.n_dofs();
+        const TrilinosWrappers::MPI::Vector &residual = problem.residual;
 
         const Tensor<2, 3> H = kin == K::small_strain ? Tensor<2, 3>(0.01 * H_large) : H_large;
         std::vector<unsigned int>                   component;
         std::map<types::global_dof_index, Point<3>> support;
         dof_points(mapping, dof_handler, component, support);
-        const IndexSet                all = complete_index_set(n);
-        TrilinosWrappers::MPI::Vector u(all, MPI_COMM_WORLD), residual(all, MPI_COMM_WORLD),
-            external(all, MPI_COMM_WORLD);
         for (unsigned int i = 0; i < n; ++i)
-          u[i] = (H * support[i])[component[i]];
+          problem.u[i] = (H * support[i])[component[i]];
 
-        AffineConstraints<double> none;
-        none.close();
-        const auto status = assemble(assembler, dof_handler, u, points, none, residual, external);
+        const auto status = problem.assemble(problem.u, false);
         ASSERT_TRUE(status.ok) << status.message;
 
         // reference: the nodal forces of the traction P N on the six faces
@@ -173,7 +141,7 @@ TEST(Dim3, PatchTestAffineDisplacementGivesFaceReactionsOnly)
           F[d][d] += 1.;
         material::MaterialState trial;
         Tensor<2, 3>            P;
-        model->evaluate(F, material::MaterialState(), trial, P, nullptr);
+        problem.model->evaluate(F, material::MaterialState(), trial, P, nullptr);
         Vector<double>                       reference(n);
         FEFaceValues<3>                      fe_face(mapping,
                                 fe,
@@ -240,29 +208,17 @@ namespace
                                       const double                        delta,
                                       const unsigned int                  n_steps)
   {
-    Triangulation<3> tria;
-    make_cube(tria, 2);
-    const FESystem<3> fe(FE_Q<3>(1), 3);
-    const MappingQ<3> mapping(1);
-    DoFHandler<3>     dof_handler(tria);
-    dof_handler.distribute_dofs(fe);
-    const unsigned int n = dof_handler.n_dofs();
-
-    const auto model = material::create_constitutive_model(K::small_strain, mat, false);
-    const mechanics::BoundaryConditions<3> bcs(mechanics::BoundaryConditionParameters{});
-    const mechanics::PlanarKinematics<3>   kinematics(mechanics::PlanarModel::plane_strain, 1.);
-    const mechanics::Assembler<3>          assembler(mapping, fe, 2, kinematics, *model, bcs);
-    mechanics::MaterialPointStorage<3>     points;
-    points.initialize(tria.begin_active(), tria.end(), assembler.quadrature().size());
-    solver::LinearSolver<3> linear_solver(solver::LinearSolverParameters{});
-
-    const IndexSet         all = complete_index_set(n);
-    DynamicSparsityPattern dsp(n, n);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp);
-    TrilinosWrappers::SparseMatrix matrix;
-    matrix.reinit(all, all, dsp, MPI_COMM_WORLD);
-    TrilinosWrappers::MPI::Vector u(all, MPI_COMM_WORLD), du(all, MPI_COMM_WORLD),
-        residual(all, MPI_COMM_WORLD), external(all, MPI_COMM_WORLD), rhs(all, MPI_COMM_WORLD);
+    test_support::AssemblerTestOptions options;
+    options.material = mat;
+    test_support::AssemblerTestProblem<3> problem(
+        options, [](Triangulation<3> &tria) { make_cube(tria, 2); });
+    const FESystem<3>             &fe = problem.fe;
+    const MappingQ<3>             &mapping = problem.mapping;
+    const DoFHandler<3>           &dof_handler = problem.dof_handler;
+    const unsigned int             n = problem.n_dofs();
+    TrilinosWrappers::MPI::Vector &u = problem.u;
+    TrilinosWrappers::MPI::Vector  du = problem.vector();
+    solver::LinearSolver<3>        linear_solver(solver::LinearSolverParameters{});
 
     const double force_scale = mat.youngs_modulus * delta; // stress x unit area
     for (unsigned int step = 1; step <= n_steps; ++step)
@@ -290,22 +246,21 @@ namespace
             fe.component_mask(FEValuesExtractors::Scalar(2)));
         newton.close();
 
-        const auto status = assemble(
-            assembler, dof_handler, u, points, newton, residual, external, &matrix, &rhs);
+        const auto status = problem.assemble(u, problem.targets(true), &newton);
         EXPECT_TRUE(status.ok) << status.message;
-        if (it > 0 && rhs.l2_norm() < 1e-12 * force_scale)
+        if (it > 0 && problem.rhs.l2_norm() < 1e-12 * force_scale)
         {
           converged = true;
           break;
         }
         du = 0.;
-        linear_solver.solve(matrix, du, rhs);
+        linear_solver.solve(problem.matrix, du, problem.rhs);
         newton.distribute(du);
         u += du;
       }
       EXPECT_TRUE(converged) << "step " << step;
-      for (const auto &cell : tria.active_cell_iterators())
-        for (const auto &p : points.get_data(cell))
+      for (const auto &cell : problem.tria.active_cell_iterators())
+        for (const auto &p : problem.points.get_data(cell))
           p->commit();
     }
 
@@ -313,8 +268,8 @@ namespace
     for (unsigned int i = 0; i < n; ++i)
       result.u.push_back(u[i]);
     dof_points(mapping, dof_handler, result.component, result.support);
-    for (const auto &cell : tria.active_cell_iterators())
-      for (const auto &p : points.get_data(cell))
+    for (const auto &cell : problem.tria.active_cell_iterators())
+      for (const auto &p : problem.points.get_data(cell))
         result.states.push_back(p->committed);
     return result;
   }
@@ -388,48 +343,31 @@ TEST(Dim3, UniaxialCompressionNewtonSolveMatchesAnalyticSolution)
 // |K m| <= 1e-10 |K|_F |m| (round-off of the assembly).
 TEST(Dim3, AlgebraicMultigridWithSixRigidBodyModesMatchesDirectSolver)
 {
-  Triangulation<3> tria;
-  make_cube(tria, 12);
-  const FESystem<3> fe(FE_Q<3>(1), 3);
-  const MappingQ<3> mapping(1);
-  DoFHandler<3>     dof_handler(tria);
-  dof_handler.distribute_dofs(fe);
-  const unsigned int n = dof_handler.n_dofs();
+  test_support::AssemblerTestOptions options;
+  options.material = elastic_material();
+  options.conditions = {test_support::surface_load(
+      5, mechanics::BoundaryConditionType::traction, "0.5 * x; -0.3; -1 - y")};
+  test_support::AssemblerTestProblem<3> problem(
+      options, [](Triangulation<3> &tria) { make_cube(tria, 12); });
+  const MappingQ<3>                    &mapping = problem.mapping;
+  const DoFHandler<3>                  &dof_handler = problem.dof_handler;
+  const unsigned int                    n = problem.n_dofs();
+  const IndexSet                       &all = problem.all;
+  const TrilinosWrappers::SparseMatrix &matrix = problem.matrix;
+  const TrilinosWrappers::MPI::Vector  &rhs = problem.rhs;
+  TrilinosWrappers::SparseMatrix        free_matrix = problem.new_matrix();
+  TrilinosWrappers::MPI::Vector         free_rhs = problem.vector();
 
-  const auto model
-      = material::create_constitutive_model(K::small_strain, elastic_material(), false);
-  mechanics::BoundaryConditionParameters bc_parameters;
-  mechanics::BoundaryCondition           traction;
-  traction.id = 5;
-  traction.type = mechanics::BoundaryConditionType::traction;
-  traction.value = "0.5 * x; -0.3; -1 - y";
-  bc_parameters.conditions = {traction};
-  const mechanics::BoundaryConditions<3> bcs(bc_parameters);
-  const mechanics::PlanarKinematics<3>   kinematics(mechanics::PlanarModel::plane_strain, 1.);
-  const mechanics::Assembler<3>          assembler(mapping, fe, 2, kinematics, *model, bcs);
-  mechanics::MaterialPointStorage<3>     points;
-  points.initialize(tria.begin_active(), tria.end(), assembler.quadrature().size());
-
-  const IndexSet         all = complete_index_set(n);
-  DynamicSparsityPattern dsp(n, n);
-  DoFTools::make_sparsity_pattern(dof_handler, dsp);
-  TrilinosWrappers::SparseMatrix matrix, free_matrix;
-  matrix.reinit(all, all, dsp, MPI_COMM_WORLD);
-  free_matrix.reinit(all, all, dsp, MPI_COMM_WORLD);
-  TrilinosWrappers::MPI::Vector u(all, MPI_COMM_WORLD), residual(all, MPI_COMM_WORLD),
-      external(all, MPI_COMM_WORLD), rhs(all, MPI_COMM_WORLD), free_rhs(all, MPI_COMM_WORLD);
-
-  AffineConstraints<double> none, clamped;
-  none.close();
+  AffineConstraints<double> clamped;
   VectorTools::interpolate_boundary_values(
       mapping, dof_handler, 4, Functions::ZeroFunction<3>(3), clamped);
   clamped.close();
 
-  ASSERT_TRUE(
-      assemble(assembler, dof_handler, u, points, clamped, residual, external, &matrix, &rhs).ok);
-  ASSERT_TRUE(
-      assemble(assembler, dof_handler, u, points, none, residual, external, &free_matrix, &free_rhs)
-          .ok);
+  mechanics::AssemblyTargets free_targets = problem.targets(true);
+  free_targets.matrix = &free_matrix;
+  free_targets.rhs = &free_rhs;
+  ASSERT_TRUE(problem.assemble(problem.u, problem.targets(true), &clamped).ok);
+  ASSERT_TRUE(problem.assemble(problem.u, free_targets).ok);
   ASSERT_GT(rhs.l2_norm(), 0.);
 
   solver::LinearSolverParameters direct_parameters, amg_parameters;

@@ -15,6 +15,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -57,7 +58,10 @@ namespace ausroll::mechanics
    * (with the F-bar helper), a face-load part and a row-transform part run per cell by
    * dealii::WorkStream on `DEAL_II_NUM_THREADS` threads (scratch and copy data), and a copier that
    * adds each cell to the Trilinos targets through AffineConstraints::distribute_local_to_global
-   * in cell order, so the sums are the serial ones whatever the number of threads. The 3D embedding
+   * in cell order, so the sums are the serial ones whatever the number of threads (the worker is
+   * assemble_one_cell(): assemble_cell() with the F-bar helper f_bar_reference() / f_bar_point() /
+   * add_f_bar_tangent(), assemble_face_loads(), apply_row_transforms(); each part has its own
+   * scratch data: CellScratch, FBarScratch, FaceScratch). The 3D embedding
    * of the planar model comes from PlanarKinematics; surface loads from BoundaryConditions.
    *
    * Surface loads: `traction` conditions are dead loads per reference area. `pressure` conditions
@@ -134,41 +138,88 @@ namespace ausroll::mechanics
         const dealii::TrilinosWrappers::MPI::Vector                  &solution) const;
 
   private:
+    using ActiveCell = typename dealii::DoFHandler<dim>::active_cell_iterator;
+
     struct Setup;       ///< what one assembly call needs in every cell (flags, tables, inputs)
-    struct ScratchData; ///< FEValues and work arrays of one thread (WorkStream scratch)
+    struct CellScratch; ///< cell part: FEValues, Grad u, shape-function gradients G_i, P, A
+    struct FBarScratch; ///< F-bar helper: centre FEValues, J0, tr(F0 - I), d ln J0 / du_j
+    struct FaceScratch; ///< face-load part: FEFaceValues, Grad u and u on the face
+    struct ScratchData; ///< the three parts, one per thread (WorkStream scratch)
     struct CopyData;    ///< local matrix and vectors of one cell, its failure (WorkStream copy)
+    struct FBarPoint;   ///< F-bar at one point: F_bar, s, kappa, F^-1
 
     /**
-     * F-bar helper: the reference volume change of the cell in @p scratch.fe_values (J0 and
-     * tr(F0 - I) at the cell centre for Q1, their volume averages for higher degrees) and
-     * d ln J0 / du_j (small strain: d tr(F0 - I) / du_j) into @p scratch. Returns false and sets
-     * @p copy's failure for an inverted reference.
+     * WorkStream worker: cell part (with the F-bar helper), face-load part and row-transform
+     * part of @p cell into @p copy (residual = internal - external force).
      */
-    bool f_bar_reference(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
-                         const Setup                                                  &setup,
-                         ScratchData                                                  &scratch,
-                         CopyData                                                     &copy) const;
+    void assemble_one_cell(const ActiveCell &cell,
+                           const Setup      &setup,
+                           ScratchData      &scratch,
+                           CopyData         &copy) const;
 
-    /** Internal forces and material tangent of one cell (the quadrature loop). */
-    void assemble_cell(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
-                       const Setup                                                  &setup,
-                       ScratchData                                                  &scratch,
-                       CopyData                                                     &copy) const;
+    /**
+     * Cell part: internal forces and material tangent of one cell (the quadrature loop; with
+     * F-bar the material points see F_bar of f_bar_point() and the tangent gets the reference
+     * term of add_f_bar_tangent()). Zeroes @p copy's matrix and vectors first; sets its failure
+     * for an inverted element or a material failure.
+     */
+    void assemble_cell(const ActiveCell &cell,
+                       const Setup      &setup,
+                       CellScratch      &scratch,
+                       FBarScratch      &f_bar_scratch,
+                       CopyData         &copy) const;
 
-    /** Surface loads (dead traction, follower pressure and its load stiffness) of one cell. */
-    void assemble_face_loads(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
-                             const Setup                                                  &setup,
-                             ScratchData                                                  &scratch,
-                             CopyData &copy) const;
+    /**
+     * F-bar helper, per cell: the reference volume change of the cell (J0 and tr(F0 - I) at the
+     * cell centre for Q1, their volume averages over @p cell_scratch's quadrature points, already
+     * reinitialised, for higher degrees) and d ln J0 / du_j (small strain: d tr(F0 - I) / du_j)
+     * into @p scratch. Returns false and sets @p copy's failure for an inverted reference.
+     */
+    bool f_bar_reference(const ActiveCell  &cell,
+                         const Setup       &setup,
+                         const CellScratch &cell_scratch,
+                         FBarScratch       &scratch,
+                         CopyData          &copy) const;
 
-    /** Friction row transforms on the rows of the cell's nodes (residual and tangent). */
+    /** F-bar helper, per point: F_bar = s F (in the n x n block; small strain: the B-bar shift
+        of the trace), s and kappa = s^(1 - n) from the reference in @p scratch. */
+    FBarPoint f_bar_point(const Setup                &setup,
+                          const FBarScratch          &scratch,
+                          const dealii::Tensor<2, 3> &F,
+                          const double                J) const;
+
+    /** F-bar helper, tangent: the rank-one term q_i (d ln J0_j - d ln J_j) of the exact
+        linearisation at one point (weight @p dV) added to @p cell_matrix. */
+    void add_f_bar_tangent(const Setup                &setup,
+                           const FBarPoint            &point,
+                           const dealii::Tensor<2, 3> &F,
+                           const double                dV,
+                           const CellScratch          &cell_scratch,
+                           FBarScratch                &scratch,
+                           dealii::FullMatrix<double> &cell_matrix) const;
+
+    /** Face-load part: surface loads (dead traction, follower pressure and its load stiffness)
+        on the boundary faces of one cell, into @p copy's external force and matrix. */
+    void assemble_face_loads(const ActiveCell &cell,
+                             const Setup      &setup,
+                             FaceScratch      &scratch,
+                             CopyData         &copy) const;
+
+    /** Row-transform part: friction row transforms on the rows of the cell's nodes (free
+        residual and tangent; the residual itself stays untransformed: reactions). */
     void apply_row_transforms(const Setup &setup, CopyData &copy) const;
+
+    /** Row-transform part, global: the constant offsets of the row transforms (shear friction)
+        into free residual and rhs, once per node by the owner of its first DoF. */
+    void add_row_transform_offsets(const dealii::DoFHandler<dim> &dof_handler,
+                                   const Setup                   &setup) const;
 
     /** The call-independent part of @p setup: flags, shape-function tables, F-bar n and E. */
     void fill_setup(Setup &setup) const;
 
-    /** Add one cell to the targets (serial, in cell order: the WorkStream copier). */
-    void copy_local_to_global(const CopyData &copy, const Setup &setup) const;
+    /** Add one cell to the targets (serial, in cell order: the WorkStream copier); gathers the
+        outcome (failure, min det F) in @p setup. */
+    void copy_local_to_global(const CopyData &copy, Setup &setup) const;
 
     const dealii::Mapping<dim>        &mapping;
     const dealii::FiniteElement<dim>  &fe;

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Convergence study of a resolved flagship scene with scripts/convergence_study.py: adaptive
+# levels (maximum level at the contact = initial refinement cycles) and a step-size sequence,
+# Richardson estimates and a work-precision PNG.
+#  gear_rolling (prm/gear_rolling_adaptive.prm): residual d_n along the flank (max-norm on the
+#    common radius grid), peak die force, die force at t = 0.6, peak contact pressure, plastic-zone
+#    depth (eps_p > 0.2 %).
+#  disk_rolling (prm/disk_rolling_adaptive.prm): the 15 degree ring refined to 15 / 2^level degrees
+#    in the band, radially likewise; steps = rolling steps per revolution (Coulomb mu = 0.3); mean
+#    die force over 60-300 degrees of revolution, residual lobe (max) and trough (min) of the rim,
+#    and the residual rim in the max-norm on the common angle grid.
+# Usage: benchmarks/convergence/convergence.sh SCENE [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [more convergence_study.py options]
+#   SCENE: gear_rolling (defaults: levels "3 4 5", steps "60 120 240 480", step level 4) or
+#          disk_rolling (defaults: levels "1 2 3", steps "144 288 576", step level 2)
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+SCENE="${1:-}"
+case "$SCENE" in
+  gear_rolling)
+    DEFAULTS=("3 4 5" "60 120 240 480" 4)
+    SCENE_OPTIONS=(
+      --set "Output/Write VTU = true" --set "Output/Interval = 1"
+      --history "F_peak=max:hypot(die_die_force_x, die_die_force_y)"
+      --history "F_0.6=at(0.6):hypot(die_die_force_x, die_die_force_y)"
+      --after "/usr/bin/python3 $ROOT/benchmarks/gear_rolling/gear_quantities.py {out}"
+      --value "d_n_min=d_n_min" --value "p_n_max=p_n_max" --value "plastic_depth=plastic_depth"
+      --profile "d_n=residual_dn.csv:R:d_n")
+    PLOT=gear_work_precision.png ;;
+  disk_rolling)
+    DEFAULTS=("1 2 3" "144 288 576" 2)
+    SCENE_OPTIONS=(
+      --step-set "Loading/End time = {n + 8}" --step-set "Loading/Number of steps = {n + 8}"
+      --step-set "Contact/Die 0/Motion/Revolution angle = t <= 4 ? 0 : (t <= {n + 4} ? {360 / n} * (t - 4) : 360)"
+      --step-set "Contact/Die 0/Motion/Feed = t <= 4 ? 0.762 * t / 4 : (t <= {n + 4} ? 0.762 : 0.762 - 1.062 * (t - {n + 4}) / 4)"
+      --time-column die_roll_revolution
+      --history "F_mean=mean(60,300):die_roll_force_magnitude"
+      --profile "lobe=profile_*.csv:angle:radial_displacement:max"
+      --profile "trough=profile_*.csv:angle:radial_displacement:min"
+      --profile "rim=profile_*.csv:angle:radial_displacement")
+    PLOT=disk_work_precision.png ;;
+  *)
+    echo "usage: $0 gear_rolling|disk_rolling [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [options]" >&2
+    exit 1 ;;
+esac
+shift
+AUSROLL="${1:-$ROOT/build/ausroll}"
+WORK="${2:-/tmp/convergence_${SCENE%_rolling}}"
+LEVELS="${3:-${DEFAULTS[0]}}"
+STEPS="${4:-${DEFAULTS[1]}}"
+STEP_LEVEL="${5:-${DEFAULTS[2]}}"
+shift $(( $# < 5 ? $# : 5 ))
+# shellcheck disable=SC2086
+exec /usr/bin/python3 "$ROOT/scripts/convergence_study.py" "$ROOT/prm/${SCENE}_adaptive.prm" \
+  --ausroll "$AUSROLL" --work "$WORK" \
+  --levels $LEVELS --level-set "Adaptivity/Maximum level = {level}" \
+  --level-set "Adaptivity/Initial refinement cycles = {level}" \
+  --steps $STEPS --step-level "$STEP_LEVEL" \
+  "${SCENE_OPTIONS[@]}" \
+  --plot "$WORK/$PLOT" "$@"
