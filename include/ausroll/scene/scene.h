@@ -181,9 +181,9 @@ namespace ausroll::scene
 
     /** History columns, CSV files and VTU fields, in their fixed order (setup_postprocessing). */
     std::unique_ptr<io::PostprocessorSet<dim>> postprocessors;
-    std::unique_ptr<io::History>               history;
-    double                                     start_wall_time = 0.;
-    dealii::Timer                              wall_clock;
+    std::unique_ptr<io::History>               history; ///< history.csv (rows: postprocessors)
+
+    dealii::Timer wall_clock;
   };
 
   /** Read @p parameter_file and run the scene on @p comm (dispatch on the dimension). */
