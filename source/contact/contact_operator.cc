@@ -505,72 +505,37 @@ namespace ausroll::contact
   }
 
   template <int dim>
-  void ContactOperator<dim>::append_rolling_columns(
-      const RollingMotion                         &rolling,
-      const std::string                           &prefix,
-      std::vector<std::pair<std::string, double>> &columns) const
+  typename ContactOperator<dim>::DieContact
+  ContactOperator<dim>::die_contact(const unsigned int k) const
   {
-    // The force on the workpiece is already in columns (force_x, force_y); resolve it in the
-    // frame of the line of centres.
-    Tensor<1, 2> force;
-    for (const auto &[name, value] : columns)
-      for (unsigned int d = 0; d < 2; ++d)
-        if (name == prefix + "force_" + std::string(1, "xy"[d]))
-          force[d] = value;
-    const auto        &d = rolling.data();
-    const Tensor<1, 2> e_r(
-        {std::cos(rolling.line_angle(time)), std::sin(rolling.line_angle(time))});
-    const Tensor<1, 2> e_t({-e_r[1], e_r[0]});
-    const double       a0 = d.initial_center_distance.value_or(d.workpiece_radius + d.die_radius);
-    columns.emplace_back(prefix + "revolution",
-                         d.direction * (rolling.line_angle(time) - d.initial_line_angle) * 180.
-                             / M_PI);
-    columns.emplace_back(prefix + "feed", a0 - rolling.center_distance(time));
-    columns.emplace_back(prefix + "force_radial", force * e_r);
-    columns.emplace_back(prefix + "force_tangential", force * e_t);
-    columns.emplace_back(prefix + "force_magnitude", force.norm());
-  }
-
-  template <int dim>
-  std::vector<std::pair<std::string, double>> ContactOperator<dim>::history_columns() const
-  {
-    std::vector<std::pair<std::string, double>> columns;
-    for (unsigned int k = 0; k < dies.size(); ++k)
-    {
-      Tensor<1, dim> force;
-      const DiePose  pose = dies[k]->pose(time);
-      double         n_stick = 0, n_slip = 0, s_min = infinity, s_max = -infinity;
-      double         x_min = infinity, x_max = -infinity; // die-frame x of closed nodes
-      for (const Node &n : nodes)
-        if (n.owned && n.status != ContactStatus::open && n.die == static_cast<int>(k))
-        {
-          force += contact_force(n);
-          (n.status == ContactStatus::stick ? n_stick : n_slip) += 1;
-          s_min = std::min(s_min, n.projection.s);
-          s_max = std::max(s_max, n.projection.s);
-          const double x_local = pose.to_local(Point<2>(n.x[0], n.x[1]))[0];
-          x_min = std::min(x_min, x_local);
-          x_max = std::max(x_max, x_local);
-        }
-      const std::string p = "die_" + dies[k]->name + "_";
-      for (unsigned int d = 0; d < dim; ++d)
-        columns.emplace_back(p + "force_" + std::string(1, "xyz"[d]),
-                             Utilities::MPI::sum(force[d], comm));
-      columns.emplace_back(p + "x", pose.reference_position()[0]);
-      columns.emplace_back(p + "y", pose.reference_position()[1]);
-      columns.emplace_back(p + "angle", pose.angle() * 180. / M_PI);
-      columns.emplace_back(p + "stick_nodes", Utilities::MPI::sum(n_stick, comm));
-      columns.emplace_back(p + "slip_nodes", Utilities::MPI::sum(n_slip, comm));
-      s_min = Utilities::MPI::min(s_min, comm);
-      s_max = Utilities::MPI::max(s_max, comm);
-      columns.emplace_back(p + "contact_length", s_max >= s_min ? s_max - s_min : 0.);
-      x_min = Utilities::MPI::min(x_min, comm);
-      x_max = Utilities::MPI::max(x_max, comm);
-      columns.emplace_back(p + "contact_width", x_max >= x_min ? x_max - x_min : 0.);
-      if (const RollingMotion *rolling = dies[k]->rolling_motion())
-        append_rolling_columns(*rolling, p, columns);
-    }
-    return columns;
+    DieContact     result;
+    Tensor<1, dim> force;
+    const DiePose  pose = dies[k]->pose(time);
+    unsigned int   n_stick = 0, n_slip = 0;
+    double         s_min = infinity, s_max = -infinity;
+    double         x_min = infinity, x_max = -infinity; // die-frame x of closed nodes
+    for (const Node &n : nodes)
+      if (n.owned && n.status != ContactStatus::open && n.die == static_cast<int>(k))
+      {
+        force += contact_force(n);
+        ++(n.status == ContactStatus::stick ? n_stick : n_slip);
+        s_min = std::min(s_min, n.projection.s);
+        s_max = std::max(s_max, n.projection.s);
+        const double x_local = pose.to_local(Point<2>(n.x[0], n.x[1]))[0];
+        x_min = std::min(x_min, x_local);
+        x_max = std::max(x_max, x_local);
+      }
+    for (unsigned int d = 0; d < dim; ++d)
+      result.force[d] = Utilities::MPI::sum(force[d], comm);
+    result.n_stick = Utilities::MPI::sum(n_stick, comm);
+    result.n_slip = Utilities::MPI::sum(n_slip, comm);
+    s_min = Utilities::MPI::min(s_min, comm);
+    s_max = Utilities::MPI::max(s_max, comm);
+    result.contact_length = s_max >= s_min ? s_max - s_min : 0.;
+    x_min = Utilities::MPI::min(x_min, comm);
+    x_max = Utilities::MPI::max(x_max, comm);
+    result.contact_width = x_max >= x_min ? x_max - x_min : 0.;
+    return result;
   }
 
   template <int dim>

@@ -4,6 +4,12 @@
 #include <ausroll/geometry/workpiece.h>
 #include <ausroll/io/checkpoint.h>
 #include <ausroll/io/output_directory.h>
+#include <ausroll/io/postprocess/die_forces.h>
+#include <ausroll/io/postprocess/field_files.h>
+#include <ausroll/io/postprocess/material_state.h>
+#include <ausroll/io/postprocess/monitor_points.h>
+#include <ausroll/io/postprocess/reaction_forces.h>
+#include <ausroll/io/postprocess/step_statistics.h>
 #include <ausroll/scene/scene.h>
 
 #include <deal.II/base/mpi.h>
@@ -209,7 +215,7 @@ namespace ausroll::scene
         check_setup();
         io::prepare_output_directory(dir, parameters.output.overwrite, comm);
       }
-      writer = std::make_unique<io::SolutionWriter<dim>>(dir, comm);
+      postprocessors->open_vtu_writer(dir);
     }
     catch (...)
     {
@@ -248,7 +254,7 @@ namespace ausroll::scene
     meta.values["contact"] = contact.pack_state();
     std::vector<double> output_times;
     std::string         output_files;
-    for (const auto &[t, file] : writer->records())
+    for (const auto &[t, file] : postprocessors->vtu_records())
     {
       output_times.push_back(t);
       output_files += (output_files.empty() ? "" : " ") + file;
@@ -284,7 +290,7 @@ namespace ausroll::scene
       files >> file;
       records.emplace_back(t, file);
     }
-    writer->set_records(records);
+    postprocessors->set_vtu_records(records);
     history = io::History::resume(comm, parameters.output.directory + "/history.csv", step_number);
     // Reactions and material points of the restored state (no solve: it is in equilibrium).
     std::string message;
@@ -345,59 +351,26 @@ namespace ausroll::scene
   template <int dim>
   void Scene<dim>::setup_postprocessing()
   {
-    monitors.clear();
-    reaction_boundaries.clear();
-    const std::string entry = "Postprocess/Monitor points";
-    for (const auto &[name, point] :
-         parse_named_points<dim>(parameters.postprocess.monitor_points, entry))
+    if (!postprocessors)
     {
-      MonitorPoint m;
-      m.name = name;
-      m.position = point;
-      unsigned int found_rank = Utilities::MPI::n_mpi_processes(comm);
-      try
-      {
-        const auto found = GridTools::find_active_cell_around_point(mapping, dof_handler, point);
-        if (found.first.state() == IteratorState::valid && found.first->is_locally_owned())
-        {
-          m.cell = found.first;
-          m.unit_point = GeometryInfo<dim>::project_to_unit_cell(found.second);
-          found_rank = rank;
-        }
-      }
-      catch (...)
-      {
-      }
-      const unsigned int owner = Utilities::MPI::min(found_rank, comm);
-      if (owner == Utilities::MPI::n_mpi_processes(comm))
-      {
-        std::ostringstream msg;
-        msg << entry << ": point '" << name << "' (" << point << ") is outside the workpiece";
-        throw InputError(msg.str());
-      }
-      m.local = owner == rank;
-      monitors.push_back(m);
+      // The order of these lines is the order of the history columns and output files.
+      namespace pp = io::postprocess;
+      const io::PostprocessParameters &p = parameters.postprocess;
+      postprocessors = std::make_unique<io::PostprocessorSet<dim>>(parameters.output, comm);
+      postprocessors->add(std::make_unique<pp::StepStatistics<dim>>(parameters.loading.end_time));
+      postprocessors->add(std::make_unique<pp::AppliedPressures<dim>>());
+      postprocessors->add(std::make_unique<pp::MonitorPoints<dim>>(p.monitor_points));
+      postprocessors->add(std::make_unique<pp::ReactionForces<dim>>(
+          parse_unsigned_list(p.reaction_boundaries, "Postprocess/Reaction boundaries")));
+      postprocessors->add(std::make_unique<pp::DieForces<dim>>());
+      postprocessors->add(std::make_unique<pp::YieldExcess<dim>>(parameters.material.yield_stress));
+      postprocessors->add(std::make_unique<pp::LineProbeFiles<dim>>(
+          p.line_probes, parameters.model.quadrature_points));
+      postprocessors->add(std::make_unique<pp::BoundaryProfileFiles<dim>>(p.boundary_profile));
+      postprocessors->add(std::make_unique<pp::ContactFiles<dim>>());
+      postprocessors->add(std::make_unique<pp::CellAverages<dim>>());
     }
-
-    for (const unsigned int id : parse_unsigned_list(parameters.postprocess.reaction_boundaries,
-                                                     "Postprocess/Reaction boundaries"))
-    {
-      std::array<IndexSet, dim> sets;
-      for (unsigned int c = 0; c < dim; ++c)
-      {
-        std::vector<bool> mask(dim, false);
-        mask[c] = true;
-        sets[c] = DoFTools::extract_boundary_dofs(
-            dof_handler, ComponentMask(mask), {static_cast<types::boundary_id>(id)});
-        sets[c] = sets[c] & owned_dofs;
-      }
-      reaction_boundaries.emplace_back(id, sets);
-    }
-
-    probes = std::make_unique<io::LineProbes<dim>>(parameters.postprocess.line_probes,
-                                                   parameters.model.quadrature_points);
-    probes->locate(mapping, dof_handler);
-    profile = std::make_unique<io::BoundaryProfile<dim>>(parameters.postprocess.boundary_profile);
+    postprocessors->initialize(postprocess_input());
   }
 
   template <int dim>
@@ -700,100 +673,30 @@ namespace ausroll::scene
   }
 
   template <int dim>
-  io::HistoryRow Scene<dim>::history_row(const solver::NewtonResult &result,
-                                         const unsigned int          cutbacks) const
+  io::PostprocessInput<dim> Scene<dim>::postprocess_input(const solver::NewtonResult *result,
+                                                          const unsigned int cutbacks) const
   {
-    io::HistoryRow row;
-    row.emplace_back("step", step_number);
-    row.emplace_back("time", time);
-    row.emplace_back("load_factor", time / parameters.loading.end_time);
-    row.emplace_back("newton_iterations", result.iterations);
-    row.emplace_back("cutbacks", cutbacks);
-    row.emplace_back("dofs", dof_handler.n_dofs());
-    row.emplace_back("cells", triangulation.n_global_active_cells());
-    row.emplace_back("wall_seconds", wall_clock.wall_time());
-
-    for (const auto &p : boundary_conditions.pressure_values(time))
-      row.push_back(p);
-
-    for (const MonitorPoint &m : monitors)
-    {
-      Tensor<1, dim> u;
-      if (m.local)
-      {
-        const Quadrature<dim> q(m.unit_point);
-        FEValues<dim>         fe_values(mapping, fe, q, update_values);
-        fe_values.reinit(m.cell);
-        std::vector<Tensor<1, dim>> values(1);
-        fe_values[FEValuesExtractors::Vector(0)].get_function_values(solution_ghosted, values);
-        u = values[0];
-      }
-      for (unsigned int d = 0; d < dim; ++d)
-        row.emplace_back(m.name + "_u" + std::string(1, "xyz"[d]), Utilities::MPI::sum(u[d], comm));
-    }
-
-    for (const auto &[id, sets] : reaction_boundaries)
-      for (unsigned int d = 0; d < dim; ++d)
-      {
-        double sum = 0.;
-        for (const auto i : sets[d])
-          sum += residual[i];
-        row.emplace_back("reaction_" + std::to_string(id) + "_" + std::string(1, "xyz"[d]),
-                         Utilities::MPI::sum(sum, comm));
-      }
-
-    for (const auto &column : contact.history_columns())
-      row.push_back(column);
-
-    // Largest yield-function value of the committed states relative to the initial yield stress:
-    // stays at round-off level unless something (e.g. a mesh transfer) breaks admissibility.
-    double excess = -1.;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto &point : material_points.get_data(cell))
-          excess = std::max(excess, model->yield_function(point->committed));
-    row.emplace_back("yield_excess",
-                     std::max(0., Utilities::MPI::max(excess, comm))
-                         / parameters.material.yield_stress);
-    return row;
+    io::PostprocessInput<dim> input{mapping,
+                                    dof_handler,
+                                    solution_ghosted,
+                                    residual,
+                                    material_points,
+                                    *model,
+                                    boundary_conditions,
+                                    contact};
+    input.time = time;
+    input.step = step_number;
+    input.newton_iterations = result ? result->iterations : 0;
+    input.cutbacks = cutbacks;
+    input.wall_seconds = wall_clock.wall_time();
+    return input;
   }
 
   template <int dim>
-  std::vector<io::CellField> Scene<dim>::cell_fields() const
+  io::HistoryRow Scene<dim>::history_row(const solver::NewtonResult &result,
+                                         const unsigned int          cutbacks) const
   {
-    const unsigned int         n = triangulation.n_active_cells();
-    std::vector<io::CellField> fields;
-    const char                *names[] = {"stress_xx", "stress_yy", "stress_zz", "stress_xy"};
-    for (const char *name : names)
-      fields.emplace_back(name, Vector<float>(n));
-    fields.emplace_back("von_mises_stress", Vector<float>(n));
-    fields.emplace_back("equivalent_plastic_strain", Vector<float>(n));
-    fields.emplace_back("subdomain", Vector<float>(n));
-    fields.emplace_back("level", Vector<float>(n));
-
-    for (const auto &cell : triangulation.active_cell_iterators())
-    {
-      const unsigned int k = cell->active_cell_index();
-      fields[6].second[k] = cell->subdomain_id();
-      fields[7].second[k] = cell->level();
-      if (!cell->is_locally_owned())
-        continue;
-      const auto points = material_points.get_data(cell);
-      double     s[6] = {0, 0, 0, 0, 0, 0};
-      for (const auto &p : points)
-      {
-        const auto &st = p->committed;
-        s[0] += st.stress[0][0];
-        s[1] += st.stress[1][1];
-        s[2] += st.stress[2][2];
-        s[3] += st.stress[0][1];
-        s[4] += st.von_mises_stress();
-        s[5] += st.equivalent_plastic_strain;
-      }
-      for (unsigned int f = 0; f < 6; ++f)
-        fields[f].second[k] = s[f] / points.size();
-    }
-    return fields;
+    return postprocessors->history_row(postprocess_input(&result, cutbacks));
   }
 
   template <int dim>
@@ -802,44 +705,7 @@ namespace ausroll::scene
     if (last_output_step == static_cast<int>(step_number))
       return;
     TimerOutput::Scope scope(*timer, "output");
-    probes->write(parameters.output.directory,
-                  output_counter,
-                  time,
-                  mapping,
-                  dof_handler,
-                  solution_ghosted,
-                  material_points);
-    profile->write(
-        parameters.output.directory, output_counter, time, mapping, dof_handler, solution_ghosted);
-    std::vector<io::NodalField>   nodal_fields;
-    TrilinosWrappers::MPI::Vector pressure_traction, status_gap;
-    if (contact.active())
-    {
-      std::ostringstream name;
-      name << parameters.output.directory << "/contact_" << std::setw(4) << std::setfill('0')
-           << output_counter << ".csv";
-      contact.write_csv(name.str(), comm);
-
-      TrilinosWrappers::MPI::Vector owned_a(owned_dofs, comm), owned_b(owned_dofs, comm);
-      contact.fill_output_vectors(owned_a, owned_b);
-      pressure_traction.reinit(owned_dofs, relevant_dofs, comm);
-      status_gap.reinit(owned_dofs, relevant_dofs, comm);
-      pressure_traction = owned_a;
-      status_gap = owned_b;
-      nodal_fields.emplace_back(std::vector<std::string>{"contact_pressure", "contact_traction"},
-                                &pressure_traction);
-      nodal_fields.emplace_back(std::vector<std::string>{"contact_status", "contact_gap"},
-                                &status_gap);
-    }
-    if (parameters.output.write_vtu)
-      writer->write(output_counter,
-                    time,
-                    dof_handler,
-                    mapping,
-                    solution_ghosted,
-                    cell_fields(),
-                    nodal_fields,
-                    parameters.output.deformed_mesh);
+    postprocessors->write_output(postprocess_input(), parameters.output.directory, output_counter);
     ++output_counter;
     last_output_step = step_number;
   }

@@ -183,23 +183,27 @@ namespace ausroll::contact
     /** Return to the committed statuses (step cut back). */
     void reset();
 
-    /** Per die (columns die_<Name>_...): force on the workpiece (force_x, force_y), pose (x, y,
-        angle), numbers of sticking/slipping nodes, contact_length (extent of the closed nodes'
-        die coordinate s, along the die surface) and contact_width (extent of the closed nodes'
-        current positions along the die-frame x axis: for a die pressed along y this is the
-        contact width, the half-width a in a half model with the symmetry axis at x = 0). */
-    std::vector<std::pair<std::string, double>> history_columns() const;
+    /** Number of dies (`Contact/Number of dies`). */
+    unsigned int n_dies() const { return dies.size(); }
 
-    /**
-     * Columns of a die with `Motion/Type = rolling` (appended after its force block by
-     * history_columns()): `revolution` theta_G (degrees), `feed` f (mm), the force on the workpiece
-     * resolved along the line of centres, `force_radial` (along e_r from the workpiece centre to
-     * the die centre: negative when the die presses), `force_tangential` (along e_t = k x e_r,
-     * counter-clockwise), and `force_magnitude` |F|.
-     */
-    void append_rolling_columns(const RollingMotion                         &rolling,
-                                const std::string                           &prefix,
-                                std::vector<std::pair<std::string, double>> &columns) const;
+    /** Die @p k (name, pose, motion, friction law). */
+    const RigidDie &die(const unsigned int k) const { return *dies[k]; }
+
+    /** The contact of one die at the current state, over all ranks (io::postprocess::DieForces
+        makes the history columns of it). */
+    struct DieContact
+    {
+      dealii::Tensor<1, dim> force;                   ///< force of the die on the workpiece
+      unsigned int           n_stick = 0, n_slip = 0; ///< sticking / slipping nodes
+      /** Extent of the closed nodes' die coordinate s (along the die surface); 0 if none. */
+      double contact_length = 0.;
+      /** Extent of the closed nodes' current positions along the die-frame x axis (for a die
+          pressed along y the contact width); 0 if none. */
+      double contact_width = 0.;
+    };
+
+    /** The contact of die @p k at the current iterate (collective: call on all ranks). */
+    DieContact die_contact(const unsigned int k) const;
 
     /** Write `contact` CSV (one row per candidate node that is closed or within 1 element of a
      * die). */

@@ -7,10 +7,8 @@
 
 #include <ausroll/adaptivity/material_point_transfer.h>
 #include <ausroll/contact/contact_operator.h>
-#include <ausroll/io/boundary_profile.h>
 #include <ausroll/io/history.h>
-#include <ausroll/io/line_probe.h>
-#include <ausroll/io/solution_writer.h>
+#include <ausroll/io/postprocess/interface.h>
 #include <ausroll/material/constitutive_model.h>
 #include <ausroll/mechanics/assembler.h>
 #include <ausroll/mechanics/boundary_conditions.h>
@@ -77,11 +75,13 @@ namespace ausroll::scene
     void build_newton_constraints();
     /** Accept the converged step: commit material points, remember the solution. */
     void commit_step();
-    /** Quantities of the converged state for history.csv. */
+    /** The read-only view of the current state for the postprocessors (Newton statistics of
+        @p result and @p cutbacks, if given). */
+    io::PostprocessInput<dim> postprocess_input(const solver::NewtonResult *result = nullptr,
+                                                const unsigned int          cutbacks = 0) const;
+    /** Quantities of the converged state for history.csv (the postprocessors' columns). */
     io::HistoryRow history_row(const solver::NewtonResult &result,
                                const unsigned int          cutbacks) const;
-    /** Cell averages of stress and plastic strain for the VTU output. */
-    std::vector<io::CellField> cell_fields() const;
     /**
      * Solve the load step from the committed state to time t_start + dt: Newton with cutbacks and,
      * with the load-increment-ratio contact strategy, sub-steps that end at contact status changes.
@@ -94,7 +94,7 @@ namespace ausroll::scene
     /** After a converged step: warn (or stop, `Loading/Stop at distorted mesh`) the first time
         the volume change at a quadrature point crosses `Loading/Volume change limit`. */
     void check_distortion();
-    /** Write VTU output of the current (converged) state. */
+    /** Output of the current (converged) state: every postprocessor's files and the VTU. */
     void write_output();
     /**
      * Adapt the mesh by the indicators of `Adaptivity` (contact band: die positions at the current
@@ -110,7 +110,8 @@ namespace ausroll::scene
     /** Restore time, statuses, output records and history from the checkpoint being resumed;
         returns the step size to continue with. */
     double restore_checkpoint_state();
-    /** Locate the monitor points and collect the DoFs of the reaction boundaries. */
+    /** Build the postprocessors (first call) and initialize them on the current mesh (monitor
+        points, reaction DoFs, probes). */
     void setup_postprocessing();
     /** Checks of a new run before anything is written: every boundary-id entry against the mesh,
         an axisymmetric body off the axis, loads finite and dies plausible at sampled times. */
@@ -178,27 +179,11 @@ namespace ausroll::scene
     double last_constraint_violation = 0.;
     double min_cell_diameter = 1.;
 
-    /** A monitored point: name, position, and where it lives (on its owning rank). */
-    struct MonitorPoint
-    {
-      std::string                                            name;
-      dealii::Point<dim>                                     position;
-      bool                                                   local = false;
-      typename dealii::DoFHandler<dim>::active_cell_iterator cell;
-      dealii::Point<dim>                                     unit_point;
-    };
-    std::vector<MonitorPoint> monitors;
-    /** Reaction boundaries: id and, per component, the locally owned DoFs on it. */
-    std::vector<std::pair<unsigned int, std::array<dealii::IndexSet, dim>>> reaction_boundaries;
+    /** History columns, CSV files and VTU fields, in their fixed order (setup_postprocessing). */
+    std::unique_ptr<io::PostprocessorSet<dim>> postprocessors;
+    std::unique_ptr<io::History>               history; ///< history.csv (rows: postprocessors)
 
-    std::unique_ptr<io::LineProbes<dim>>     probes;
-    std::unique_ptr<io::History>             history;
-    std::unique_ptr<io::SolutionWriter<dim>> writer;
-    double                                   start_wall_time = 0.;
-    dealii::Timer                            wall_clock;
-
-    /** Rim profiles (`Postprocess/Boundary profile`). */
-    std::unique_ptr<io::BoundaryProfile<dim>> profile;
+    dealii::Timer wall_clock;
   };
 
   /** Read @p parameter_file and run the scene on @p comm (dispatch on the dimension). */

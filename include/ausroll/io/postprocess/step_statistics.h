@@ -1,0 +1,42 @@
+/**
+ * @file step_statistics.h
+ * History basics: step, time, load factor, Newton iterations, cutbacks, mesh size, wall time.
+ */
+#pragma once
+
+#include <ausroll/io/postprocess/interface.h>
+
+namespace ausroll::io::postprocess
+{
+  /**
+   * History columns `step` (converged steps so far), `time` (pseudo-time t), `load_factor`
+   * (t / `Loading/End time`), `newton_iterations` and `cutbacks` (of the last step), `dofs`,
+   * `cells` (global) and `wall_seconds` (since the start of the process; not reproducible, left
+   * out of regression lines and history comparisons).
+   */
+  template <int dim>
+  class StepStatistics : public Postprocessor<dim>
+  {
+  public:
+    /** With @p end_time = `Loading/End time` (load factor 1). */
+    explicit StepStatistics(const double end_time);
+    std::string name() const override { return "step statistics"; }
+    void        execute(const PostprocessInput<dim> &input, HistoryRow &row) const override;
+
+  private:
+    double end_time;
+  };
+
+  /**
+   * History columns of the pressure loads: one per `Boundary conditions/Condition N` of type
+   * pressure, named and valued by mechanics::BoundaryConditions::pressure_values()
+   * (`pressure_<id>`, the expression evaluated at the origin at the current time).
+   */
+  template <int dim>
+  class AppliedPressures : public Postprocessor<dim>
+  {
+  public:
+    std::string name() const override { return "applied pressures"; }
+    void        execute(const PostprocessInput<dim> &input, HistoryRow &row) const override;
+  };
+} // namespace ausroll::io::postprocess

@@ -1,0 +1,53 @@
+#include <ausroll/io/postprocess/die_forces.h>
+
+#include <cmath>
+
+namespace ausroll::io::postprocess
+{
+  using namespace dealii;
+
+  template <int dim>
+  void DieForces<dim>::execute(const PostprocessInput<dim> &input, HistoryRow &row) const
+  {
+    const contact::ContactOperator<dim> &contact = input.contact;
+    for (unsigned int k = 0; k < contact.n_dies(); ++k)
+    {
+      const contact::RigidDie &die = contact.die(k);
+      const auto               c = contact.die_contact(k);
+      const contact::DiePose   pose = die.pose(input.time);
+      const std::string        p = "die_" + die.name + "_";
+      for (unsigned int d = 0; d < dim; ++d)
+        row.emplace_back(p + "force_" + std::string(1, "xyz"[d]), c.force[d]);
+      row.emplace_back(p + "x", pose.reference_position()[0]);
+      row.emplace_back(p + "y", pose.reference_position()[1]);
+      row.emplace_back(p + "angle", pose.angle() * 180. / M_PI);
+      row.emplace_back(p + "stick_nodes", c.n_stick);
+      row.emplace_back(p + "slip_nodes", c.n_slip);
+      row.emplace_back(p + "contact_length", c.contact_length);
+      row.emplace_back(p + "contact_width", c.contact_width);
+      if (const contact::RollingMotion *rolling = die.rolling_motion())
+        rolling_columns(*rolling, input.time, Tensor<1, 2>({c.force[0], c.force[1]}), p, row);
+    }
+  }
+
+  void rolling_columns(const contact::RollingMotion &rolling,
+                       const double                  time,
+                       const Tensor<1, 2>           &force,
+                       const std::string            &prefix,
+                       HistoryRow                   &row)
+  {
+    const auto        &d = rolling.data();
+    const double       psi = rolling.line_angle(time);
+    const Tensor<1, 2> e_r({std::cos(psi), std::sin(psi)});
+    const Tensor<1, 2> e_t({-e_r[1], e_r[0]});
+    const double       a0 = d.initial_center_distance.value_or(d.workpiece_radius + d.die_radius);
+    row.emplace_back(prefix + "revolution",
+                     d.direction * (psi - d.initial_line_angle) * 180. / M_PI);
+    row.emplace_back(prefix + "feed", a0 - rolling.center_distance(time));
+    row.emplace_back(prefix + "force_radial", force * e_r);
+    row.emplace_back(prefix + "force_tangential", force * e_t);
+    row.emplace_back(prefix + "force_magnitude", force.norm());
+  }
+
+  template class DieForces<2>;
+} // namespace ausroll::io::postprocess

@@ -1,0 +1,89 @@
+#include <ausroll/io/postprocess/field_files.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace ausroll::io::postprocess
+{
+  using namespace dealii;
+
+  template <int dim>
+  LineProbeFiles<dim>::LineProbeFiles(const std::string &specification,
+                                      const unsigned int n_q_points_1d)
+      : probes(specification, n_q_points_1d)
+  {
+  }
+
+  template <int dim>
+  void LineProbeFiles<dim>::initialize(const PostprocessInput<dim> &input)
+  {
+    probes.locate(input.mapping, input.dof_handler);
+  }
+
+  template <int dim>
+  void LineProbeFiles<dim>::write_files(const PostprocessInput<dim> &input,
+                                        const std::string           &directory,
+                                        const unsigned int           counter)
+  {
+    probes.write(directory,
+                 counter,
+                 input.time,
+                 input.mapping,
+                 input.dof_handler,
+                 input.solution,
+                 input.material_points);
+  }
+
+  template <int dim>
+  BoundaryProfileFiles<dim>::BoundaryProfileFiles(const BoundaryProfileParameters &parameters)
+      : profile(parameters)
+  {
+  }
+
+  template <int dim>
+  void BoundaryProfileFiles<dim>::write_files(const PostprocessInput<dim> &input,
+                                              const std::string           &directory,
+                                              const unsigned int           counter)
+  {
+    profile.write(directory, counter, input.time, input.mapping, input.dof_handler, input.solution);
+  }
+
+  template <int dim>
+  void ContactFiles<dim>::write_files(const PostprocessInput<dim> &input,
+                                      const std::string           &directory,
+                                      const unsigned int           counter)
+  {
+    written = input.contact.active();
+    if (!written)
+      return;
+    const MPI_Comm     comm = input.dof_handler.get_communicator();
+    std::ostringstream name;
+    name << directory << "/contact_" << std::setw(4) << std::setfill('0') << counter << ".csv";
+    input.contact.write_csv(name.str(), comm);
+
+    const IndexSet owned = input.dof_handler.locally_owned_dofs();
+    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(input.dof_handler);
+    TrilinosWrappers::MPI::Vector owned_a(owned, comm), owned_b(owned, comm);
+    input.contact.fill_output_vectors(owned_a, owned_b);
+    pressure_traction.reinit(owned, relevant, comm);
+    status_gap.reinit(owned, relevant, comm);
+    pressure_traction = owned_a;
+    status_gap = owned_b;
+  }
+
+  template <int dim>
+  void ContactFiles<dim>::nodal_fields(std::vector<NodalField> &fields) const
+  {
+    if (!written)
+      return;
+    fields.emplace_back(std::vector<std::string>{"contact_pressure", "contact_traction"},
+                        &pressure_traction);
+    fields.emplace_back(std::vector<std::string>{"contact_status", "contact_gap"}, &status_gap);
+  }
+
+  template class LineProbeFiles<2>;
+  template class BoundaryProfileFiles<2>;
+  template class ContactFiles<2>;
+} // namespace ausroll::io::postprocess

@@ -1,0 +1,99 @@
+#include <ausroll/io/postprocess/interface.h>
+
+#include <map>
+#include <stdexcept>
+
+namespace ausroll::io
+{
+  template <int dim>
+  PostprocessorSet<dim>::PostprocessorSet(const OutputParameters &output, const MPI_Comm comm)
+      : output(output)
+      , comm(comm)
+  {
+  }
+
+  template <int dim>
+  void PostprocessorSet<dim>::add(std::unique_ptr<Postprocessor<dim>> postprocessor)
+  {
+    members.push_back(std::move(postprocessor));
+  }
+
+  template <int dim>
+  void PostprocessorSet<dim>::initialize(const PostprocessInput<dim> &input)
+  {
+    for (const auto &p : members)
+      p->initialize(input);
+  }
+
+  template <int dim>
+  HistoryRow PostprocessorSet<dim>::history_row(const PostprocessInput<dim> &input) const
+  {
+    HistoryRow                         row;
+    std::map<std::string, std::string> producer; // column -> postprocessor
+    for (const auto &p : members)
+    {
+      const std::size_t first = row.size();
+      p->execute(input, row);
+      for (std::size_t i = first; i < row.size(); ++i)
+      {
+        const auto [where, inserted] = producer.emplace(row[i].first, p->name());
+        if (!inserted)
+          throw std::logic_error("history column '" + row[i].first + "' is produced twice (by "
+                                 + where->second + " and by " + p->name() + ")");
+      }
+    }
+    return row;
+  }
+
+  template <int dim>
+  void PostprocessorSet<dim>::open_vtu_writer(const std::string &directory)
+  {
+    writer = std::make_unique<SolutionWriter<dim>>(directory, comm);
+  }
+
+  template <int dim>
+  void PostprocessorSet<dim>::write_output(const PostprocessInput<dim> &input,
+                                           const std::string           &directory,
+                                           const unsigned int           counter)
+  {
+    for (const auto &p : members)
+      p->write_files(input, directory, counter);
+    if (!output.write_vtu)
+      return;
+    if (!writer)
+      throw std::logic_error("PostprocessorSet::write_output() before open_vtu_writer()");
+    std::vector<CellField>  cells;
+    std::vector<NodalField> nodes;
+    for (const auto &p : members)
+    {
+      p->cell_fields(input, cells);
+      p->nodal_fields(nodes);
+    }
+    writer->write(counter,
+                  input.time,
+                  input.dof_handler,
+                  input.mapping,
+                  input.solution,
+                  cells,
+                  nodes,
+                  output.deformed_mesh);
+  }
+
+  template <int dim>
+  const std::vector<std::pair<double, std::string>> &PostprocessorSet<dim>::vtu_records() const
+  {
+    static const std::vector<std::pair<double, std::string>> none;
+    return writer ? writer->records() : none;
+  }
+
+  template <int dim>
+  void
+  PostprocessorSet<dim>::set_vtu_records(const std::vector<std::pair<double, std::string>> &records)
+  {
+    if (!writer)
+      throw std::logic_error("PostprocessorSet::set_vtu_records() before open_vtu_writer()");
+    writer->set_records(records);
+  }
+
+  template class PostprocessorSet<2>;
+} // namespace ausroll::io

@@ -1,0 +1,33 @@
+#include <ausroll/io/postprocess/step_statistics.h>
+
+namespace ausroll::io::postprocess
+{
+  template <int dim>
+  StepStatistics<dim>::StepStatistics(const double end_time)
+      : end_time(end_time)
+  {
+  }
+
+  template <int dim>
+  void StepStatistics<dim>::execute(const PostprocessInput<dim> &input, HistoryRow &row) const
+  {
+    row.emplace_back("step", input.step);
+    row.emplace_back("time", input.time);
+    row.emplace_back("load_factor", input.time / end_time);
+    row.emplace_back("newton_iterations", input.newton_iterations);
+    row.emplace_back("cutbacks", input.cutbacks);
+    row.emplace_back("dofs", input.dof_handler.n_dofs());
+    row.emplace_back("cells", input.dof_handler.get_triangulation().n_global_active_cells());
+    row.emplace_back("wall_seconds", input.wall_seconds);
+  }
+
+  template <int dim>
+  void AppliedPressures<dim>::execute(const PostprocessInput<dim> &input, HistoryRow &row) const
+  {
+    for (const auto &p : input.boundary_conditions.pressure_values(input.time))
+      row.push_back(p);
+  }
+
+  template class StepStatistics<2>;
+  template class AppliedPressures<2>;
+} // namespace ausroll::io::postprocess
