@@ -213,7 +213,7 @@ namespace ausroll::contact
     ++n.changes;
     // Nested active set: a node that changed at this state is judged again only after the
     // equations have been solved with its new constraint.
-    n.fresh = parameters.strategy == ContactStrategy::nested_active_set;
+    n.fresh = hold_changed;
     if (status == ContactStatus::stick)
       // A node that stops slipping sticks where its slip started (no relative motion over the
       // step); a node that closes sticks where it meets the die.

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <ausroll/contact/contact_parameters.h>
+#include <ausroll/contact/contact_strategy.h>
 #include <ausroll/contact/nodal_row_transform.h>
 #include <ausroll/contact/rigid_die.h>
 
@@ -49,16 +50,16 @@ namespace ausroll::contact
    * equations of constrained DoFs are not solved, their residual is the reaction); R_n = n.R >= 0
    * in compression, R_t = t.R.
    *
-   * Status changes follow `Contact/Strategy`: active set (inside Newton: penetration closes a node,
-   * tension R_n < 0 opens it, |R_t| > T(R_n) makes it slip, slip reversal makes it stick) or the
-   * load-increment ratio (statuses fixed during a sub-step; the step is scaled to the first status
-   * change, NOFEAP Appendix A).
+   * The criteria for status changes are here (penetration closes a node, tension R_n < 0 opens
+   * it, |R_t| > T(R_n) makes it slip, slip reversal makes it stick; events interpolated over a
+   * step); when they are applied is the business of the StatusStrategy of `Contact/Strategy`
+   * (contact_strategy.h), which drives this object through the ContactStatusSet interface.
    *
    * Works on the locally relevant nodes of each MPI rank; decisions depend only on ghosted data,
    * so ranks sharing a node take the same decision.
    */
   template <int dim>
-  class ContactOperator
+  class ContactOperator : public ContactStatusSet
   {
   public:
     /** Dies and strategy from @p parameters. */
@@ -66,9 +67,6 @@ namespace ausroll::contact
 
     /** True if at least one die is defined. */
     bool active() const { return !dies.empty(); }
-
-    /** The strategy (`Contact/Strategy`). */
-    ContactStrategy strategy() const { return parameters.strategy; }
 
     /**
      * Collect the candidate nodes of @p dof_handler and their tributary areas
@@ -114,10 +112,13 @@ namespace ausroll::contact
      * and slip belongs to the old constraint and says nothing about the new one until the
      * equations have been solved with it.
      */
-    void start_iterate();
+    void start_iterate() override;
+
+    /** Nested active set: a node changed at an iterate is judged again only at the next one. */
+    void hold_changed_nodes(const bool hold) override { hold_changed = hold; }
 
     /** Time of the current iterate (die poses). */
-    void set_time(const double t) { time = t; }
+    void set_time(const double t) override { time = t; }
 
     /**
      * Project all nodes at displacement @p u (ghosted). With @p allow_closing, open nodes that
@@ -127,13 +128,13 @@ namespace ausroll::contact
      */
     unsigned int update_geometry(const dealii::TrilinosWrappers::MPI::Vector &u,
                                  const bool                                   allow_closing,
-                                 const bool only_unchanged_nodes = false);
+                                 const bool only_unchanged_nodes = false) override;
 
     /**
      * Nested active set: project all nodes at @p u and close the open nodes that penetrate a die.
      * Returns the number of nodes closed (global).
      */
-    unsigned int close_penetrating_nodes(const dealii::TrilinosWrappers::MPI::Vector &u);
+    unsigned int close_penetrating_nodes(const dealii::TrilinosWrappers::MPI::Vector &u) override;
 
     /**
      * Add the constraints of the closed nodes to @p constraints (which may already hold Dirichlet
@@ -154,34 +155,34 @@ namespace ausroll::contact
      * reversed slip sticks). Call after compute_reactions(). Returns the number of changes over
      * all ranks.
      */
-    unsigned int update_statuses();
+    unsigned int update_statuses() override;
 
     /**
      * Load-increment ratio: the fraction alpha in [0, 1] of the current step at which the first
      * node changes status, by linear interpolation between the committed state and the current
      * iterate (NOFEAP Appendix A). 1 if no node changes. Same value on all ranks.
      */
-    double event_ratio() const;
+    double event_ratio() const override;
 
     /**
      * Load-increment ratio: switch the status of every node whose event lies at or before
      * @p alpha_limit (fraction of the current step). Returns the number of switched nodes (global).
      */
-    unsigned int apply_events(const double alpha_limit);
+    unsigned int apply_events(const double alpha_limit) override;
 
     /** Accept the current statuses and geometry as the state at the end of a converged step. */
     void commit();
 
     /** Close the open nodes whose gap is zero (within round-off) at the current geometry.
         Returns the number of nodes closed (global). */
-    unsigned int close_touching_nodes();
+    unsigned int close_touching_nodes() override;
 
     /** Make the current statuses the statuses at the start of the step (status changes at the
         start of a load-increment-ratio step); gaps and forces of the committed state are kept. */
-    void promote_statuses();
+    void promote_statuses() override;
 
     /** Return to the committed statuses (step cut back). */
-    void reset();
+    void reset() override;
 
     /** Per die (columns die_<Name>_...): force on the workpiece (force_x, force_y), pose (x, y,
         angle), numbers of sticking/slipping nodes, contact_length (extent of the closed nodes'
@@ -306,6 +307,7 @@ namespace ausroll::contact
     double                                 time = 0.;
     double                                 gap_tolerance = 1e-10;
     double                                 force_tolerance = 0.;
-    double area_floor = 0.; ///< tributary areas below this are zero (nodes on the axis)
+    double area_floor = 0.;      ///< tributary areas below this are zero (nodes on the axis)
+    bool   hold_changed = false; ///< hold_changed_nodes()
   };
 } // namespace ausroll::contact
