@@ -222,6 +222,23 @@ namespace ausroll::contact
     std::pair<unsigned int, unsigned int> n_stick_slip() const;
 
   private:
+    /**
+     * The status of a node and what goes with it: once as committed (end of the last converged
+     * step), once as current (the iterate being solved). Commit copies current to committed,
+     * a cutback copies it back.
+     */
+    struct NodeState
+    {
+      ContactStatus    status = ContactStatus::open;
+      int              die = -1; ///< die in contact, or closest die (-1: none in range)
+      dealii::Point<2> stick;    ///< die point of a sticking node (die coordinates)
+      int              sign = 0; ///< slip direction along the die tangent (+1/-1)
+      double           s = 0.;   ///< die coordinate: committed, at the converged geometry;
+                                 ///< current, where the current slip started
+      double Rn = 0.;            ///< normal contact force (compression positive)
+      double Rt = 0.;            ///< tangential contact force
+    };
+
     struct Node
     {
       std::array<dealii::types::global_dof_index, dim> dofs; ///< DoFs by component
@@ -230,46 +247,17 @@ namespace ausroll::contact
       double                                           area = 0.; ///< tributary area
       std::vector<unsigned int>                        dies;      ///< candidate dies
 
-      // committed state (end of the last converged step)
-      ContactStatus    c_status = ContactStatus::open;
-      int              c_die = -1;
-      dealii::Point<2> c_stick;
-      int              c_sign = 0;
-      double           c_s = 0.;
-      double           c_gap = 0.;
-      bool             c_gap_valid = false;
-      double           c_Rn = 0., c_Rt = 0.;
+      NodeState committed;                   ///< end of the last converged step
+      NodeState current;                     ///< current iterate
+      double    committed_gap = 0.;          ///< gap at the last commit
+      bool      committed_gap_valid = false; ///< the node was within a die's search distance
 
-      // current iterate
-      ContactStatus          status = ContactStatus::open;
-      int                    die = -1;   ///< die in contact, or closest die (-1: none in range)
-      dealii::Point<2>       stick;      ///< die point of a sticking node (die coordinates)
-      int                    sign = 0;   ///< slip direction along the die tangent (+1/-1)
-      double                 s_ref = 0.; ///< die coordinate where the current slip started
-      DieProjection          projection; ///< projection on die `die` at the current iterate
-      dealii::Point<dim>     x;          ///< current position
-      dealii::Tensor<1, dim> R;          ///< nodal contact force (residual)
-      double                 Rn = 0., Rt = 0.;
+      // geometry and forces of the current iterate
+      DieProjection          projection;  ///< projection on die `current.die`
+      dealii::Point<dim>     x;           ///< current position
+      dealii::Tensor<1, dim> R;           ///< nodal contact force (residual)
       unsigned int           changes = 0; ///< status changes in the current step
       bool fresh = false; ///< status changed at the current iterate (reaction not yet meaningful)
-
-      /** Make the current status, die, stick point and slip sign the committed ones. */
-      void commit_status()
-      {
-        c_status = status;
-        c_die = die;
-        c_stick = stick;
-        c_sign = sign;
-      }
-      /** Return status, die, stick point, slip sign and slip origin to the committed ones. */
-      void restore_status()
-      {
-        status = c_status;
-        die = c_die;
-        stick = c_stick;
-        sign = c_sign;
-        s_ref = c_s;
-      }
     };
 
     /** A status change of a node: at which fraction of the step, to which status. */
