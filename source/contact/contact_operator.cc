@@ -519,15 +519,10 @@ namespace ausroll::contact
   void ContactOperator<dim>::append_rolling_columns(
       const RollingMotion                         &rolling,
       const std::string                           &prefix,
+      const Tensor<1, 2>                          &force,
       std::vector<std::pair<std::string, double>> &columns) const
   {
-    // The force on the workpiece is already in columns (force_x, force_y); resolve it in the
-    // frame of the line of centres.
-    Tensor<1, 2> force;
-    for (const auto &[name, value] : columns)
-      for (unsigned int d = 0; d < 2; ++d)
-        if (name == prefix + "force_" + std::string(1, "xy"[d]))
-          force[d] = value;
+    // the force on the workpiece resolved in the frame of the line of centres
     const auto        &d = rolling.data();
     const Tensor<1, 2> e_r(
         {std::cos(rolling.line_angle(time)), std::sin(rolling.line_angle(time))});
@@ -565,9 +560,12 @@ namespace ausroll::contact
           x_max = std::max(x_max, x_local);
         }
       const std::string p = "die_" + dies[k]->name + "_";
+      Tensor<1, 2>      total_force; // over the ranks
       for (unsigned int d = 0; d < dim; ++d)
-        columns.emplace_back(p + "force_" + std::string(1, "xyz"[d]),
-                             Utilities::MPI::sum(force[d], comm));
+      {
+        total_force[d] = Utilities::MPI::sum(force[d], comm);
+        columns.emplace_back(p + "force_" + std::string(1, "xyz"[d]), total_force[d]);
+      }
       columns.emplace_back(p + "x", pose.reference_position()[0]);
       columns.emplace_back(p + "y", pose.reference_position()[1]);
       columns.emplace_back(p + "angle", pose.angle() * 180. / M_PI);
@@ -580,7 +578,7 @@ namespace ausroll::contact
       x_max = Utilities::MPI::max(x_max, comm);
       columns.emplace_back(p + "contact_width", x_max >= x_min ? x_max - x_min : 0.);
       if (const RollingMotion *rolling = dies[k]->rolling_motion())
-        append_rolling_columns(*rolling, p, columns);
+        append_rolling_columns(*rolling, p, total_force, columns);
     }
     return columns;
   }

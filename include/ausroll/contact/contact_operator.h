@@ -193,13 +193,14 @@ namespace ausroll::contact
 
     /**
      * Columns of a die with `Motion/Type = rolling` (appended after its force block by
-     * history_columns()): `revolution` theta_G (degrees), `feed` f (mm), the force on the workpiece
-     * resolved along the line of centres, `force_radial` (along e_r from the workpiece centre to
-     * the die centre: negative when the die presses), `force_tangential` (along e_t = k x e_r,
-     * counter-clockwise), and `force_magnitude` |F|.
+     * history_columns()): `revolution` theta_G (degrees), `feed` f (mm), the force @p force on the
+     * workpiece (summed over the ranks) resolved along the line of centres, `force_radial` (along
+     * e_r from the workpiece centre to the die centre: negative when the die presses),
+     * `force_tangential` (along e_t = k x e_r, counter-clockwise), and `force_magnitude` |F|.
      */
     void append_rolling_columns(const RollingMotion                         &rolling,
                                 const std::string                           &prefix,
+                                const dealii::Tensor<1, 2>                  &force,
                                 std::vector<std::pair<std::string, double>> &columns) const;
 
     /** Write `contact` CSV (one row per candidate node that is closed or within 1 element of a
