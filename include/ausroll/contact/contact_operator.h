@@ -62,7 +62,7 @@ namespace ausroll::contact
   class ContactOperator : public ContactStatusSet
   {
   public:
-    /** Dies and strategy from @p parameters. */
+    /** Dies, friction laws and status-rule settings from @p parameters. */
     explicit ContactOperator(const ContactParameters &parameters);
 
     /** True if at least one die is defined. */
@@ -105,18 +105,6 @@ namespace ausroll::contact
     /** Distance from @p x to the nearest die (|gap|) at time @p t (infinite if none in range). */
     double distance_to_dies(const dealii::Point<dim> &x, const double t) const;
 
-    /**
-     * A new displacement iterate begins (after a Newton update): statuses changed at the previous
-     * iterate may be judged again by their reactions. Within one iterate a node changes its status
-     * at most once: the reaction of a node that was just closed, opened or switched between stick
-     * and slip belongs to the old constraint and says nothing about the new one until the
-     * equations have been solved with it.
-     */
-    void start_iterate() override;
-
-    /** Nested active set: a node changed at an iterate is judged again only at the next one. */
-    void hold_changed_nodes(const bool hold) override { hold_changed = hold; }
-
     /** Time of the current iterate (die poses). */
     void set_time(const double t) override { time = t; }
 
@@ -129,12 +117,6 @@ namespace ausroll::contact
     unsigned int update_geometry(const dealii::TrilinosWrappers::MPI::Vector &u,
                                  const bool                                   allow_closing,
                                  const bool only_unchanged_nodes = false) override;
-
-    /**
-     * Nested active set: project all nodes at @p u and close the open nodes that penetrate a die.
-     * Returns the number of nodes closed (global).
-     */
-    unsigned int close_penetrating_nodes(const dealii::TrilinosWrappers::MPI::Vector &u) override;
 
     /**
      * Add the constraints of the closed nodes to @p constraints (which may already hold Dirichlet
@@ -150,39 +132,8 @@ namespace ausroll::contact
     /** Store the nodal forces R = r(node) from the residual @p residual (ghosted). */
     void compute_reactions(const dealii::TrilinosWrappers::MPI::Vector &residual);
 
-    /**
-     * Active set: change statuses by the force criteria (tension opens, |R_t| > mu R_n slips,
-     * reversed slip sticks). Call after compute_reactions(). Returns the number of changes over
-     * all ranks.
-     */
-    unsigned int update_statuses() override;
-
-    /**
-     * Load-increment ratio: the fraction alpha in [0, 1] of the current step at which the first
-     * node changes status, by linear interpolation between the committed state and the current
-     * iterate (NOFEAP Appendix A). 1 if no node changes. Same value on all ranks.
-     */
-    double event_ratio() const override;
-
-    /**
-     * Load-increment ratio: switch the status of every node whose event lies at or before
-     * @p alpha_limit (fraction of the current step). Returns the number of switched nodes (global).
-     */
-    unsigned int apply_events(const double alpha_limit) override;
-
     /** Accept the current statuses and geometry as the state at the end of a converged step. */
     void commit();
-
-    /** Close the open nodes whose gap is zero (within round-off) at the current geometry.
-        Returns the number of nodes closed (global). */
-    unsigned int close_touching_nodes() override;
-
-    /** Make the current statuses the statuses at the start of the step (status changes at the
-        start of a load-increment-ratio step); gaps and forces of the committed state are kept. */
-    void promote_statuses() override;
-
-    /** Return to the committed statuses (step cut back). */
-    void reset() override;
 
     /** Per die (columns die_<Name>_...): force on the workpiece (force_x, force_y), pose (x, y,
         angle), numbers of sticking/slipping nodes, contact_length (extent of the closed nodes'
@@ -221,6 +172,60 @@ namespace ausroll::contact
 
     /** Numbers of sticking and of slipping nodes (global, all dies), for the status line. */
     std::pair<unsigned int, unsigned int> n_stick_slip() const;
+
+  private:
+    /** @name ContactStatusSet: the status rules, applied by the StatusStrategy of
+        `Contact/Strategy` (contact_strategy.h), which alone calls them. */
+    //@{
+    /**
+     * A new displacement iterate begins (after a Newton update): statuses changed at the previous
+     * iterate may be judged again by their reactions. Within one iterate a node changes its status
+     * at most once: the reaction of a node that was just closed, opened or switched between stick
+     * and slip belongs to the old constraint and says nothing about the new one until the
+     * equations have been solved with it.
+     */
+    void start_iterate() override;
+
+    /** Nested active set: a node changed at an iterate is judged again only at the next one. */
+    void hold_changed_nodes(const bool hold) override { hold_changed = hold; }
+
+    /**
+     * Nested active set: project all nodes at @p u and close the open nodes that penetrate a die.
+     * Returns the number of nodes closed (global).
+     */
+    unsigned int close_penetrating_nodes(const dealii::TrilinosWrappers::MPI::Vector &u) override;
+
+    /**
+     * Active set: change statuses by the force criteria (tension opens, |R_t| > mu R_n slips,
+     * reversed slip sticks). Call after compute_reactions(). Returns the number of changes over
+     * all ranks.
+     */
+    unsigned int update_statuses() override;
+
+    /**
+     * Load-increment ratio: the fraction alpha in [0, 1] of the current step at which the first
+     * node changes status, by linear interpolation between the committed state and the current
+     * iterate (NOFEAP Appendix A). 1 if no node changes. Same value on all ranks.
+     */
+    double event_ratio() const override;
+
+    /**
+     * Load-increment ratio: switch the status of every node whose event lies at or before
+     * @p alpha_limit (fraction of the current step). Returns the number of switched nodes (global).
+     */
+    unsigned int apply_events(const double alpha_limit) override;
+
+    /** Close the open nodes whose gap is zero (within round-off) at the current geometry.
+        Returns the number of nodes closed (global). */
+    unsigned int close_touching_nodes() override;
+
+    /** Make the current statuses the statuses at the start of the step (status changes at the
+        start of a load-increment-ratio step); gaps and forces of the committed state are kept. */
+    void promote_statuses() override;
+
+    /** Return to the committed statuses (step cut back). */
+    void reset() override;
+    //@}
 
   private:
     /**
