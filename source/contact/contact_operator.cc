@@ -145,7 +145,7 @@ namespace ausroll::contact
     update_geometry(u, true);
     unsigned int closed = 0;
     for (const Node &n : nodes)
-      if (n.owned && n.fresh && n.status != ContactStatus::open)
+      if (n.owned && n.fresh && n.current.status != ContactStatus::open)
         ++closed;
     return Utilities::MPI::sum(closed, comm);
   }
@@ -167,19 +167,19 @@ namespace ausroll::contact
     {
       for (unsigned int c = 0; c < dim; ++c)
         n.x[c] = n.X[c] + u[n.dofs[c]];
-      if (n.status != ContactStatus::open)
-        n.projection = dies[n.die]->project(to_2d(n.x), time);
+      if (n.current.status != ContactStatus::open)
+        n.projection = dies[n.current.die]->project(to_2d(n.x), time);
       else
       {
         n.projection = DieProjection();
-        n.die = -1;
+        n.current.die = -1;
         for (const unsigned int k : n.dies)
         {
           const DieProjection p = dies[k]->project(to_2d(n.x), time);
           if (p.valid && (!n.projection.valid || p.gap < n.projection.gap))
           {
             n.projection = p;
-            n.die = k;
+            n.current.die = k;
           }
         }
         // A node that has used up its status changes (`Maximum status changes`) still closes
@@ -191,7 +191,7 @@ namespace ausroll::contact
             && n.projection.gap < (n.changes == 0 ? gap_tolerance : -gap_tolerance))
           switch_status(n, closing_status(n));
       }
-      if (n.status != ContactStatus::open)
+      if (n.current.status != ContactStatus::open)
         ++closed;
     }
     build_row_transforms();
@@ -201,34 +201,36 @@ namespace ausroll::contact
   template <int dim>
   ContactStatus ContactOperator<dim>::closing_status(const Node &n) const
   {
-    return dies[n.die]->friction->sticks_when_closing() ? ContactStatus::stick
-                                                        : ContactStatus::slip;
+    return dies[n.current.die]->friction->sticks_when_closing() ? ContactStatus::stick
+                                                                : ContactStatus::slip;
   }
 
   template <int dim>
   void ContactOperator<dim>::switch_status(Node &n, const ContactStatus status)
   {
-    if (status == n.status)
+    if (status == n.current.status)
       return;
     ++n.changes;
     // Nested active set: a node that changed at this state is judged again only after the
     // equations have been solved with its new constraint.
-    n.fresh = parameters.strategy == ContactStrategy::nested_active_set;
+    n.fresh = hold_changed;
     if (status == ContactStatus::stick)
       // A node that stops slipping sticks where its slip started (no relative motion over the
       // step); a node that closes sticks where it meets the die.
-      n.stick = n.status == ContactStatus::slip ? dies[n.die]->die_surface().point_at(n.s_ref)
-                                                : n.projection.local_point;
+      n.current.stick = n.current.status == ContactStatus::slip
+                            ? dies[n.current.die]->die_surface().point_at(n.current.s)
+                            : n.projection.local_point;
     if (status == ContactStatus::slip)
     {
       // direction of the slip along the die tangent: opposite to the tangential force
-      n.sign = n.Rt > 0. ? -1 : (n.Rt < 0. ? 1 : 0);
-      n.s_ref = n.status == ContactStatus::stick ? dies[n.die]->die_surface().project(n.stick).s
-                                                 : n.projection.s;
+      n.current.sign = n.current.Rt > 0. ? -1 : (n.current.Rt < 0. ? 1 : 0);
+      n.current.s = n.current.status == ContactStatus::stick
+                        ? dies[n.current.die]->die_surface().project(n.current.stick).s
+                        : n.projection.s;
     }
     if (status == ContactStatus::open)
-      n.sign = 0;
-    n.status = status;
+      n.current.sign = 0;
+    n.current.status = status;
   }
 
   template <int dim>
@@ -257,19 +259,19 @@ namespace ausroll::contact
     // slip limit of the friction law, affine near the current state: T = T(0) + T' R_n), i.e.
     // rows <- (I + s T' t (x) n) rows + s T(0) t: Coulomb I + mu s t (x) n, Tresca an offset.
     for (const Node &n : nodes)
-      if (n.status == ContactStatus::slip && dies[n.die]->friction->switches_stick_slip()
-          && n.sign != 0)
+      if (n.current.status == ContactStatus::slip
+          && dies[n.current.die]->friction->switches_stick_slip() && n.current.sign != 0)
       {
         NodalRowTransform<dim> t;
         t.dofs = n.dofs;
-        const SlipLimit limit = dies[n.die]->friction->slip_limit(n.Rn, n.area);
+        const SlipLimit limit = dies[n.current.die]->friction->slip_limit(n.current.Rn, n.area);
         for (unsigned int i = 0; i < dim; ++i)
         {
           for (unsigned int j = 0; j < dim; ++j)
             t.matrix[i][j]
                 = (i == j ? 1. : 0.)
-                  + limit.slope * n.sign * n.projection.tangent[i] * n.projection.normal[j];
-          t.offset[i] = limit.intercept * n.sign * n.projection.tangent[i];
+                  + limit.slope * n.current.sign * n.projection.tangent[i] * n.projection.normal[j];
+          t.offset[i] = limit.intercept * n.current.sign * n.projection.tangent[i];
         }
         transforms.emplace(n.dofs[0], t);
       }
@@ -283,9 +285,9 @@ namespace ausroll::contact
     double violation = 0.;
     for (const Node &n : nodes)
     {
-      if (n.status == ContactStatus::stick)
+      if (n.current.status == ContactStatus::stick)
       {
-        const Point<2> target = dies[n.die]->material_point(n.stick, time);
+        const Point<2> target = dies[n.current.die]->material_point(n.current.stick, time);
         for (unsigned int c = 0; c < dim; ++c)
           if (!constraints.is_constrained(n.dofs[c]))
           {
@@ -295,7 +297,7 @@ namespace ausroll::contact
               violation = std::max(violation, std::abs(target[c] - n.x[c]));
           }
       }
-      else if (n.status == ContactStatus::slip)
+      else if (n.current.status == ContactStatus::slip)
       {
         const Tensor<1, 2> &normal = n.projection.normal;
         // constrain the component with the larger normal entry that is still free
@@ -324,14 +326,14 @@ namespace ausroll::contact
     {
       for (unsigned int c = 0; c < dim; ++c)
         n.R[c] = residual[n.dofs[c]];
-      if (n.status != ContactStatus::open || n.projection.valid)
+      if (n.current.status != ContactStatus::open || n.projection.valid)
       {
-        n.Rn = n.R * n.projection.normal;
-        n.Rt = n.R * n.projection.tangent;
+        n.current.Rn = n.R * n.projection.normal;
+        n.current.Rt = n.R * n.projection.tangent;
       }
       else
-        n.Rn = n.Rt = 0.;
-      if (n.status != ContactStatus::open)
+        n.current.Rn = n.current.Rt = 0.;
+      if (n.current.status != ContactStatus::open)
         largest = std::max(largest, n.R.norm());
     }
     // Forces below this are round-off (the residual of the free equations is ~1e-10 of them).
@@ -344,20 +346,22 @@ namespace ausroll::contact
     unsigned int changes = 0;
     for (Node &n : nodes)
     {
-      if (n.status == ContactStatus::open || n.fresh || n.changes >= parameters.max_status_changes)
+      if (n.current.status == ContactStatus::open || n.fresh
+          || n.changes >= parameters.max_status_changes)
         continue;
-      const FrictionLaw &friction = *dies[n.die]->friction;
-      ContactStatus      target = n.status;
-      if (n.Rn < -force_tolerance)
+      const FrictionLaw &friction = *dies[n.current.die]->friction;
+      ContactStatus      target = n.current.status;
+      if (n.current.Rn < -force_tolerance)
         target = ContactStatus::open;
-      else if (n.status == ContactStatus::stick
-               && friction.respond(n.Rn, n.Rt, n.area, force_tolerance).slip)
+      else if (n.current.status == ContactStatus::stick
+               && friction.respond(n.current.Rn, n.current.Rt, n.area, force_tolerance).slip)
         target = ContactStatus::slip;
-      else if (n.status == ContactStatus::slip && friction.switches_stick_slip()
-               && n.sign * die_coordinate_difference(n.die, n.projection.s, n.s_ref)
+      else if (n.current.status == ContactStatus::slip && friction.switches_stick_slip()
+               && n.current.sign
+                          * die_coordinate_difference(n.current.die, n.projection.s, n.current.s)
                       < -gap_tolerance)
         target = ContactStatus::stick;
-      if (target != n.status)
+      if (target != n.current.status)
       {
         switch_status(n, target);
         if (n.owned)
@@ -376,39 +380,40 @@ namespace ausroll::contact
     Event event;
     if (n.changes >= parameters.max_status_changes)
       return event;
-    if (n.status == ContactStatus::open)
+    if (n.current.status == ContactStatus::open)
     {
       if (!n.projection.valid)
         return event;
       const double g1 = n.projection.gap;
       event.target = closing_status(n);
-      if (n.c_gap_valid && n.c_die == n.die && n.c_gap >= 0. && g1 < n.c_gap)
-        event.alpha = n.c_gap / (n.c_gap - g1); // open -> closed: the gap closes
+      if (n.committed_gap_valid && n.committed.die == n.current.die && n.committed_gap >= 0.
+          && g1 < n.committed_gap)
+        event.alpha = n.committed_gap / (n.committed_gap - g1); // open -> closed: the gap closes
       else if (g1 < -gap_tolerance)
         event.alpha = 0.; // penetrating without a history: close at once
       return event;
     }
 
-    const FrictionLaw &friction = *dies[n.die]->friction;
-    const double       dRn = n.Rn - n.c_Rn;
+    const FrictionLaw &friction = *dies[n.current.die]->friction;
+    const double       dRn = n.current.Rn - n.committed.Rn;
     // closed -> open: the normal force becomes tensile
-    if (dRn < 0. && n.c_Rn >= 0.)
-      event = Event{n.c_Rn / -dRn, ContactStatus::open};
-    else if (n.Rn < -force_tolerance)
+    if (dRn < 0. && n.committed.Rn >= 0.)
+      event = Event{n.committed.Rn / -dRn, ContactStatus::open};
+    else if (n.current.Rn < -force_tolerance)
       event = Event{0., ContactStatus::open};
     if (!friction.switches_stick_slip())
       return event;
-    if (n.status == ContactStatus::stick)
+    if (n.current.status == ContactStatus::stick)
     {
       // stick -> slip: s R_t reaches the slip limit T(R_n) (s = sign of the final tangential
       // force); f = s R_t - T(R_n) is linear in the step on one affine piece of T, else secant
-      const double    s = n.Rt >= 0. ? 1. : -1.;
-      const SlipLimit l0 = friction.slip_limit(n.c_Rn, n.area);
-      const SlipLimit l1 = friction.slip_limit(n.Rn, n.area);
+      const double    s = n.current.Rt >= 0. ? 1. : -1.;
+      const SlipLimit l0 = friction.slip_limit(n.committed.Rn, n.area);
+      const SlipLimit l1 = friction.slip_limit(n.current.Rn, n.area);
       const double    dT = l0.slope == l1.slope ? (l1.intercept - l0.intercept) + l1.slope * dRn
-                                                : l1.value(n.Rn) - l0.value(n.c_Rn);
-      const double    f0 = s * n.c_Rt - l0.value(n.c_Rn);
-      const double    df = s * (n.Rt - n.c_Rt) - dT;
+                                                : l1.value(n.current.Rn) - l0.value(n.committed.Rn);
+      const double    f0 = s * n.committed.Rt - l0.value(n.committed.Rn);
+      const double    df = s * (n.current.Rt - n.committed.Rt) - dT;
       if (df > 0.)
       {
         const double alpha = f0 >= 0. ? 0. : -f0 / df;
@@ -416,7 +421,8 @@ namespace ausroll::contact
           event = Event{alpha, ContactStatus::slip};
       }
     }
-    else if (n.sign * die_coordinate_difference(n.die, n.projection.s, n.s_ref) < -gap_tolerance)
+    else if (n.current.sign * die_coordinate_difference(n.current.die, n.projection.s, n.current.s)
+             < -gap_tolerance)
       event = Event{0., ContactStatus::stick}; // slip reversal: switch at once (load factor zero)
     return event;
   }
@@ -453,15 +459,16 @@ namespace ausroll::contact
   {
     for (Node &n : nodes)
     {
-      n.commit_status();
-      n.c_s = n.projection.s;
-      n.c_gap = n.projection.gap;
-      n.c_gap_valid = n.projection.valid;
-      n.c_Rn = n.status == ContactStatus::open ? 0. : n.Rn;
-      n.c_Rt = n.status == ContactStatus::open ? 0. : n.Rt;
+      n.committed = n.current;
+      // die coordinate and gap of the converged geometry; an open node carries no force
+      n.committed.s = n.projection.s;
+      n.committed_gap = n.projection.gap;
+      n.committed_gap_valid = n.projection.valid;
+      if (n.current.status == ContactStatus::open)
+        n.committed.Rn = n.committed.Rt = 0.;
       n.changes = 0;
-      if (n.status == ContactStatus::slip)
-        n.s_ref = n.projection.s;
+      if (n.current.status == ContactStatus::slip)
+        n.current.s = n.projection.s;
     }
   }
 
@@ -470,7 +477,8 @@ namespace ausroll::contact
   {
     unsigned int closed = 0;
     for (Node &n : nodes)
-      if (n.status == ContactStatus::open && n.projection.valid && n.projection.gap < gap_tolerance)
+      if (n.current.status == ContactStatus::open && n.projection.valid
+          && n.projection.gap < gap_tolerance)
       {
         switch_status(n, closing_status(n));
         if (n.owned)
@@ -485,9 +493,14 @@ namespace ausroll::contact
   {
     for (Node &n : nodes)
     {
-      n.commit_status();
-      if (n.status == ContactStatus::slip)
-        n.c_s = n.s_ref;
+      // statuses of the current iterate, forces (and die coordinate unless slipping) of the
+      // committed state
+      const NodeState start = n.committed;
+      n.committed = n.current;
+      n.committed.Rn = start.Rn;
+      n.committed.Rt = start.Rt;
+      if (n.current.status != ContactStatus::slip)
+        n.committed.s = start.s;
     }
   }
 
@@ -496,10 +509,8 @@ namespace ausroll::contact
   {
     for (Node &n : nodes)
     {
-      n.restore_status();
+      n.current = n.committed;
       n.changes = 0;
-      n.Rn = n.c_Rn;
-      n.Rt = n.c_Rt;
     }
     build_row_transforms();
   }
@@ -515,10 +526,10 @@ namespace ausroll::contact
     double         s_min = infinity, s_max = -infinity;
     double         x_min = infinity, x_max = -infinity; // die-frame x of closed nodes
     for (const Node &n : nodes)
-      if (n.owned && n.status != ContactStatus::open && n.die == static_cast<int>(k))
+      if (n.owned && n.current.status != ContactStatus::open && n.current.die == static_cast<int>(k))
       {
         force += contact_force(n);
-        ++(n.status == ContactStatus::stick ? n_stick : n_slip);
+        ++(n.current.status == ContactStatus::stick ? n_stick : n_slip);
         s_min = std::min(s_min, n.projection.s);
         s_max = std::max(s_max, n.projection.s);
         const double x_local = pose.to_local(Point<2>(n.x[0], n.x[1]))[0];
@@ -543,17 +554,18 @@ namespace ausroll::contact
   {
     // Normal part from the residual; tangential part from the residual when sticking, from the
     // friction law when slipping (so that a symmetry condition on the same node does not count).
-    double tangential = n.Rt;
-    if (n.status == ContactStatus::slip)
+    double tangential = n.current.Rt;
+    if (n.current.status == ContactStatus::slip)
     {
-      const FrictionLaw &friction = *dies[n.die]->friction;
-      tangential = friction.switches_stick_slip()
-                       ? -n.sign * friction.slip_limit(n.Rn, n.area).value(n.Rn)
-                       : 0.;
+      const FrictionLaw &friction = *dies[n.current.die]->friction;
+      tangential
+          = friction.switches_stick_slip()
+                ? -n.current.sign * friction.slip_limit(n.current.Rn, n.area).value(n.current.Rn)
+                : 0.;
     }
     Tensor<1, dim> f;
     for (unsigned int d = 0; d < dim; ++d)
-      f[d] = n.Rn * n.projection.normal[d] + tangential * n.projection.tangent[d];
+      f[d] = n.current.Rn * n.projection.normal[d] + tangential * n.projection.tangent[d];
     return f;
   }
 
@@ -562,20 +574,20 @@ namespace ausroll::contact
   {
     std::vector<std::vector<double>> rows;
     for (const Node &n : nodes)
-      if (n.owned && n.die >= 0 && n.projection.valid)
+      if (n.owned && n.current.die >= 0 && n.projection.valid)
         rows.push_back(
-            {double(n.die),
+            {double(n.current.die),
              n.projection.s,
              n.X[0],
              n.X[1],
              n.x[0],
              n.x[1],
              n.projection.gap,
-             n.area > area_floor ? n.Rn / n.area : 0.,
+             n.area > area_floor ? n.current.Rn / n.area : 0.,
              n.area > area_floor ? (contact_force(n) * n.projection.tangent) / n.area : 0.,
-             n.Rn,
+             n.current.Rn,
              contact_force(n) * n.projection.tangent,
-             double(static_cast<int>(n.status))});
+             double(static_cast<int>(n.current.status))});
     const std::vector<std::vector<double>> all = gather_sorted_rows(comm, rows);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
@@ -604,12 +616,13 @@ namespace ausroll::contact
       {
         if (n.area > area_floor)
         {
-          pressure_traction[n.dofs[0]] = n.status == ContactStatus::open ? 0. : n.Rn / n.area;
-          pressure_traction[n.dofs[1]] = n.status == ContactStatus::open
+          pressure_traction[n.dofs[0]]
+              = n.current.status == ContactStatus::open ? 0. : n.current.Rn / n.area;
+          pressure_traction[n.dofs[1]] = n.current.status == ContactStatus::open
                                              ? 0.
                                              : (contact_force(n) * n.projection.tangent) / n.area;
         }
-        status_gap[n.dofs[0]] = static_cast<int>(n.status);
+        status_gap[n.dofs[0]] = static_cast<int>(n.current.status);
         status_gap[n.dofs[1]] = n.projection.gap;
       }
     pressure_traction.compress(VectorOperation::insert);
@@ -623,8 +636,8 @@ namespace ausroll::contact
     for (const Node &n : nodes)
       if (n.owned)
       {
-        n_stick += n.status == ContactStatus::stick ? 1 : 0;
-        n_slip += n.status == ContactStatus::slip ? 1 : 0;
+        n_stick += n.current.status == ContactStatus::stick ? 1 : 0;
+        n_slip += n.current.status == ContactStatus::slip ? 1 : 0;
       }
     return {Utilities::MPI::sum(n_stick, comm), Utilities::MPI::sum(n_slip, comm)};
   }
@@ -634,7 +647,7 @@ namespace ausroll::contact
   {
     unsigned int changed = 0;
     for (const Node &n : nodes)
-      if (n.owned && n.status != n.c_status)
+      if (n.owned && n.current.status != n.committed.status)
         ++changed;
     return Utilities::MPI::sum(changed, comm);
   }
@@ -649,21 +662,21 @@ namespace ausroll::contact
   {
     std::vector<double> local;
     for (const Node &n : nodes)
-      if (n.owned && n.c_status != ContactStatus::open)
+      if (n.owned && n.committed.status != ContactStatus::open)
         local.insert(local.end(),
                      {n.X[0],
                       n.X[1],
-                      double(static_cast<int>(n.c_status)),
-                      double(n.c_die),
-                      n.c_stick[0],
-                      n.c_stick[1],
-                      double(n.c_sign),
-                      n.c_s,
-                      n.c_gap,
-                      n.c_gap_valid ? 1. : 0.,
-                      n.c_Rn,
-                      n.c_Rt,
-                      n.s_ref});
+                      double(static_cast<int>(n.committed.status)),
+                      double(n.committed.die),
+                      n.committed.stick[0],
+                      n.committed.stick[1],
+                      double(n.committed.sign),
+                      n.committed.s,
+                      n.committed_gap,
+                      n.committed_gap_valid ? 1. : 0.,
+                      n.committed.Rn,
+                      n.committed.Rt,
+                      n.current.s});
     std::vector<double> all;
     for (const auto &part : Utilities::MPI::all_gather(comm, local))
       all.insert(all.end(), part.begin(), part.end());
@@ -685,22 +698,17 @@ namespace ausroll::contact
       if (it == saved.end())
         continue;
       const double *d = it->second;
-      n.c_status = static_cast<ContactStatus>(static_cast<int>(d[2]));
-      n.c_die = static_cast<int>(d[3]);
-      n.c_stick = Point<2>(d[4], d[5]);
-      n.c_sign = static_cast<int>(d[6]);
-      n.c_s = d[7];
-      n.c_gap = d[8];
-      n.c_gap_valid = d[9] != 0.;
-      n.c_Rn = d[10];
-      n.c_Rt = d[11];
-      n.s_ref = d[12];
-      n.status = n.c_status;
-      n.die = n.c_die;
-      n.stick = n.c_stick;
-      n.sign = n.c_sign;
-      n.Rn = n.c_Rn;
-      n.Rt = n.c_Rt;
+      n.committed.status = static_cast<ContactStatus>(static_cast<int>(d[2]));
+      n.committed.die = static_cast<int>(d[3]);
+      n.committed.stick = Point<2>(d[4], d[5]);
+      n.committed.sign = static_cast<int>(d[6]);
+      n.committed.s = d[7];
+      n.committed_gap = d[8];
+      n.committed_gap_valid = d[9] != 0.;
+      n.committed.Rn = d[10];
+      n.committed.Rt = d[11];
+      n.current = n.committed;
+      n.current.s = d[12];
       n.changes = 0;
     }
     build_row_transforms();

@@ -148,6 +148,7 @@ namespace ausroll::scene
                                                       == mechanics::PlanarModel::plane_stress))
       , boundary_conditions(prm.boundary_conditions)
       , contact(prm.contact)
+      , contact_strategy(contact::make_status_strategy(prm.contact, contact, contact.active()))
       , linear_solver(prm.solver.linear)
       , newton(prm.solver)
   {
@@ -475,24 +476,12 @@ namespace ausroll::scene
   bool Scene<dim>::assemble(const bool with_matrix, std::string &message)
   {
     TimerOutput::Scope scope(*timer, "assembly");
-    const bool         active_set
-        = contact.active() && contact.strategy() == contact::ContactStrategy::active_set;
-    const bool nested
-        = contact.active() && contact.strategy() == contact::ContactStrategy::nested_active_set;
-    contact.set_time(time);
-    contact.start_iterate();
-
-    // With the active-set strategy, statuses that change at this iterate (judged by the reactions
-    // of this very assembly) require the constraints to be rebuilt and the system re-assembled.
-    for (unsigned int pass = 0;; ++pass)
+    contact_strategy->begin_iterate(time);
+    // Statuses that the strategy changes at this iterate (judged by the reactions of this very
+    // assembly) require the constraints to be rebuilt and the system re-assembled.
+    for (;;)
     {
-      if (contact.active())
-        // Penetrating open nodes close at every iterate with both active-set strategies (a body
-        // held by contact alone needs them at once); the nested strategy closes so only nodes
-        // that have not changed in this step and judges all other changes at converged states
-        // (update_constraints_at_convergence()): a node opened by tension that re-penetrates
-        // slightly in the next iterates would otherwise chatter.
-        contact.update_geometry(solution_ghosted, active_set || nested, nested);
+      contact_strategy->update_geometry(solution_ghosted);
       build_newton_constraints();
 
       residual = 0.;
@@ -527,9 +516,7 @@ namespace ausroll::scene
         break;
       residual_ghosted = residual;
       contact.compute_reactions(residual_ghosted);
-      if (!active_set || pass >= 4)
-        break;
-      const unsigned int changes = contact.update_statuses();
+      const unsigned int changes = contact_strategy->update_at_iterate();
       if (changes == 0)
         break;
       newton_log << "      contact: " << changes << " status change" << (changes > 1 ? "s" : "")
@@ -550,18 +537,8 @@ namespace ausroll::scene
   template <int dim>
   unsigned int Scene<dim>::update_constraints_at_convergence(ConditionalOStream &log)
   {
-    if (!contact.active() || contact.strategy() != contact::ContactStrategy::nested_active_set)
-      return 0;
-    // The reactions of the converged state (residual_ghosted of the last assembly) decide;
-    // penetrating open nodes close.
-    contact.set_time(time);
-    contact.start_iterate();
-    const unsigned int closed = contact.close_penetrating_nodes(solution_ghosted);
-    const unsigned int changed = contact.update_statuses();
-    if (closed + changed > 0)
-      log << "      contact: " << closed << " closed, " << changed << " other status change"
-          << (changed == 1 ? "" : "s") << " at the converged state" << std::endl;
-    return closed + changed;
+    // the reactions of the converged state (residual_ghosted of the last assembly) decide
+    return contact_strategy->update_at_convergence(solution_ghosted, log);
   }
 
   template <int dim>
@@ -605,7 +582,7 @@ namespace ausroll::scene
   template <int dim>
   bool Scene<dim>::backtrack_with_small_constraint_gaps() const
   {
-    return contact.active() && contact.strategy() == contact::ContactStrategy::nested_active_set;
+    return contact_strategy->backtrack_with_small_constraint_gaps();
   }
 
   template <int dim>
@@ -717,20 +694,9 @@ namespace ausroll::scene
                                 unsigned int         &cutbacks)
   {
     const solver::LoadingParameters &loading = parameters.loading;
-    const bool                       ratio_strategy
-        = contact.active() && contact.strategy() == contact::ContactStrategy::load_increment_ratio;
-    const double tolerance = parameters.contact.ratio_tolerance;
-    unsigned int substeps = 0;
     cutbacks = 0;
-    if (ratio_strategy)
-    {
-      // Nodes that touch a die at the start of the step close before it (load factor zero).
-      time = t_start;
-      contact.set_time(time);
-      contact.update_geometry(solution_ghosted, false);
-      if (contact.close_touching_nodes() > 0)
-        contact.promote_statuses();
-    }
+    time = t_start;
+    contact_strategy->begin_step(solution_ghosted, t_start);
     // A step that fails with the predictor is first tried again from the converged state (the
     // extrapolation overshoots where the path turns: a fold-over corner, a node reaching a die).
     bool predict
@@ -753,7 +719,7 @@ namespace ausroll::scene
       if (!result.converged && predict)
       {
         predict = false;
-        contact.reset();
+        contact_strategy->restart_step();
         log << "  step " << step_number + 1 << " (t = " << time << "): " << result.reason
             << "; trying again without the predictor" << std::endl;
         continue;
@@ -761,7 +727,7 @@ namespace ausroll::scene
       if (!result.converged)
       {
         ++cutbacks;
-        contact.reset();
+        contact_strategy->restart_step();
         log << "  step " << step_number + 1 << " (t = " << time << "): " << result.reason;
         if (cutbacks > loading.max_cutbacks)
         {
@@ -788,34 +754,12 @@ namespace ausroll::scene
         log << "; cutting back to dt = " << dt << std::endl;
         continue;
       }
-      if (!ratio_strategy)
+      // The strategy may end the step earlier, where a contact status changes.
+      const contact::StepDecision decision
+          = contact_strategy->end_of_step(dt, loading.end_time, newton_log);
+      if (decision.accept)
         return time;
-
-      // Load-increment ratio (NOFEAP): end the step where the first contact status changes.
-      const double alpha = contact.event_ratio();
-      if (alpha >= 1. - tolerance || ++substeps > 200)
-      {
-        const unsigned int switched = contact.apply_events(1. + tolerance);
-        if (switched > 0)
-          newton_log << "      contact: " << switched << " status change(s) at the end of the step"
-                     << std::endl;
-        return time;
-      }
-      if (alpha * dt <= 1e-9 * loading.end_time)
-      {
-        // The change happens at the start of the step: switch and solve the step again.
-        const unsigned int switched = contact.apply_events(tolerance);
-        contact.promote_statuses();
-        newton_log << "      contact: " << switched << " status change(s) at the start of the step"
-                   << std::endl;
-        if (switched == 0)
-          return time;
-        continue;
-      }
-      contact.reset();
-      dt *= alpha;
-      newton_log << "      contact: next status change at alpha = " << alpha
-                 << ", step reduced to dt = " << dt << std::endl;
+      dt *= decision.step_factor;
     }
   }
 

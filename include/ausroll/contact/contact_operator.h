@@ -7,6 +7,7 @@
 #pragma once
 
 #include <ausroll/contact/contact_parameters.h>
+#include <ausroll/contact/contact_strategy.h>
 #include <ausroll/contact/nodal_row_transform.h>
 #include <ausroll/contact/rigid_die.h>
 
@@ -49,26 +50,23 @@ namespace ausroll::contact
    * equations of constrained DoFs are not solved, their residual is the reaction); R_n = n.R >= 0
    * in compression, R_t = t.R.
    *
-   * Status changes follow `Contact/Strategy`: active set (inside Newton: penetration closes a node,
-   * tension R_n < 0 opens it, |R_t| > T(R_n) makes it slip, slip reversal makes it stick) or the
-   * load-increment ratio (statuses fixed during a sub-step; the step is scaled to the first status
-   * change, NOFEAP Appendix A).
+   * The criteria for status changes are here (penetration closes a node, tension R_n < 0 opens
+   * it, |R_t| > T(R_n) makes it slip, slip reversal makes it stick; events interpolated over a
+   * step); when they are applied is the business of the StatusStrategy of `Contact/Strategy`
+   * (contact_strategy.h), which drives this object through the ContactStatusSet interface.
    *
    * Works on the locally relevant nodes of each MPI rank; decisions depend only on ghosted data,
    * so ranks sharing a node take the same decision.
    */
   template <int dim>
-  class ContactOperator
+  class ContactOperator : public ContactStatusSet
   {
   public:
-    /** Dies and strategy from @p parameters. */
+    /** Dies, friction laws and status-rule settings from @p parameters. */
     explicit ContactOperator(const ContactParameters &parameters);
 
     /** True if at least one die is defined. */
     bool active() const { return !dies.empty(); }
-
-    /** The strategy (`Contact/Strategy`). */
-    ContactStrategy strategy() const { return parameters.strategy; }
 
     /**
      * Collect the candidate nodes of @p dof_handler and their tributary areas
@@ -107,17 +105,8 @@ namespace ausroll::contact
     /** Distance from @p x to the nearest die (|gap|) at time @p t (infinite if none in range). */
     double distance_to_dies(const dealii::Point<dim> &x, const double t) const;
 
-    /**
-     * A new displacement iterate begins (after a Newton update): statuses changed at the previous
-     * iterate may be judged again by their reactions. Within one iterate a node changes its status
-     * at most once: the reaction of a node that was just closed, opened or switched between stick
-     * and slip belongs to the old constraint and says nothing about the new one until the
-     * equations have been solved with it.
-     */
-    void start_iterate();
-
     /** Time of the current iterate (die poses). */
-    void set_time(const double t) { time = t; }
+    void set_time(const double t) override { time = t; }
 
     /**
      * Project all nodes at displacement @p u (ghosted). With @p allow_closing, open nodes that
@@ -127,13 +116,7 @@ namespace ausroll::contact
      */
     unsigned int update_geometry(const dealii::TrilinosWrappers::MPI::Vector &u,
                                  const bool                                   allow_closing,
-                                 const bool only_unchanged_nodes = false);
-
-    /**
-     * Nested active set: project all nodes at @p u and close the open nodes that penetrate a die.
-     * Returns the number of nodes closed (global).
-     */
-    unsigned int close_penetrating_nodes(const dealii::TrilinosWrappers::MPI::Vector &u);
+                                 const bool only_unchanged_nodes = false) override;
 
     /**
      * Add the constraints of the closed nodes to @p constraints (which may already hold Dirichlet
@@ -149,39 +132,8 @@ namespace ausroll::contact
     /** Store the nodal forces R = r(node) from the residual @p residual (ghosted). */
     void compute_reactions(const dealii::TrilinosWrappers::MPI::Vector &residual);
 
-    /**
-     * Active set: change statuses by the force criteria (tension opens, |R_t| > mu R_n slips,
-     * reversed slip sticks). Call after compute_reactions(). Returns the number of changes over
-     * all ranks.
-     */
-    unsigned int update_statuses();
-
-    /**
-     * Load-increment ratio: the fraction alpha in [0, 1] of the current step at which the first
-     * node changes status, by linear interpolation between the committed state and the current
-     * iterate (NOFEAP Appendix A). 1 if no node changes. Same value on all ranks.
-     */
-    double event_ratio() const;
-
-    /**
-     * Load-increment ratio: switch the status of every node whose event lies at or before
-     * @p alpha_limit (fraction of the current step). Returns the number of switched nodes (global).
-     */
-    unsigned int apply_events(const double alpha_limit);
-
     /** Accept the current statuses and geometry as the state at the end of a converged step. */
     void commit();
-
-    /** Close the open nodes whose gap is zero (within round-off) at the current geometry.
-        Returns the number of nodes closed (global). */
-    unsigned int close_touching_nodes();
-
-    /** Make the current statuses the statuses at the start of the step (status changes at the
-        start of a load-increment-ratio step); gaps and forces of the committed state are kept. */
-    void promote_statuses();
-
-    /** Return to the committed statuses (step cut back). */
-    void reset();
 
     /** Number of dies (`Contact/Number of dies`). */
     unsigned int n_dies() const { return dies.size(); }
@@ -225,6 +177,77 @@ namespace ausroll::contact
     std::pair<unsigned int, unsigned int> n_stick_slip() const;
 
   private:
+    /** @name ContactStatusSet: the status rules, applied by the StatusStrategy of
+        `Contact/Strategy` (contact_strategy.h), which alone calls them. */
+    //@{
+    /**
+     * A new displacement iterate begins (after a Newton update): statuses changed at the previous
+     * iterate may be judged again by their reactions. Within one iterate a node changes its status
+     * at most once: the reaction of a node that was just closed, opened or switched between stick
+     * and slip belongs to the old constraint and says nothing about the new one until the
+     * equations have been solved with it.
+     */
+    void start_iterate() override;
+
+    /** Nested active set: a node changed at an iterate is judged again only at the next one. */
+    void hold_changed_nodes(const bool hold) override { hold_changed = hold; }
+
+    /**
+     * Nested active set: project all nodes at @p u and close the open nodes that penetrate a die.
+     * Returns the number of nodes closed (global).
+     */
+    unsigned int close_penetrating_nodes(const dealii::TrilinosWrappers::MPI::Vector &u) override;
+
+    /**
+     * Active set: change statuses by the force criteria (tension opens, |R_t| > mu R_n slips,
+     * reversed slip sticks). Call after compute_reactions(). Returns the number of changes over
+     * all ranks.
+     */
+    unsigned int update_statuses() override;
+
+    /**
+     * Load-increment ratio: the fraction alpha in [0, 1] of the current step at which the first
+     * node changes status, by linear interpolation between the committed state and the current
+     * iterate (NOFEAP Appendix A). 1 if no node changes. Same value on all ranks.
+     */
+    double event_ratio() const override;
+
+    /**
+     * Load-increment ratio: switch the status of every node whose event lies at or before
+     * @p alpha_limit (fraction of the current step). Returns the number of switched nodes (global).
+     */
+    unsigned int apply_events(const double alpha_limit) override;
+
+    /** Close the open nodes whose gap is zero (within round-off) at the current geometry.
+        Returns the number of nodes closed (global). */
+    unsigned int close_touching_nodes() override;
+
+    /** Make the current statuses the statuses at the start of the step (status changes at the
+        start of a load-increment-ratio step); gaps and forces of the committed state are kept. */
+    void promote_statuses() override;
+
+    /** Return to the committed statuses (step cut back). */
+    void reset() override;
+    //@}
+
+  private:
+    /**
+     * The status of a node and what goes with it: once as committed (end of the last converged
+     * step), once as current (the iterate being solved). Commit copies current to committed,
+     * a cutback copies it back.
+     */
+    struct NodeState
+    {
+      ContactStatus    status = ContactStatus::open;
+      int              die = -1; ///< die in contact, or closest die (-1: none in range)
+      dealii::Point<2> stick;    ///< die point of a sticking node (die coordinates)
+      int              sign = 0; ///< slip direction along the die tangent (+1/-1)
+      double           s = 0.;   ///< die coordinate: committed, at the converged geometry;
+                                 ///< current, where the current slip started
+      double Rn = 0.;            ///< normal contact force (compression positive)
+      double Rt = 0.;            ///< tangential contact force
+    };
+
     struct Node
     {
       std::array<dealii::types::global_dof_index, dim> dofs; ///< DoFs by component
@@ -233,46 +256,17 @@ namespace ausroll::contact
       double                                           area = 0.; ///< tributary area
       std::vector<unsigned int>                        dies;      ///< candidate dies
 
-      // committed state (end of the last converged step)
-      ContactStatus    c_status = ContactStatus::open;
-      int              c_die = -1;
-      dealii::Point<2> c_stick;
-      int              c_sign = 0;
-      double           c_s = 0.;
-      double           c_gap = 0.;
-      bool             c_gap_valid = false;
-      double           c_Rn = 0., c_Rt = 0.;
+      NodeState committed;                   ///< end of the last converged step
+      NodeState current;                     ///< current iterate
+      double    committed_gap = 0.;          ///< gap at the last commit
+      bool      committed_gap_valid = false; ///< the node was within a die's search distance
 
-      // current iterate
-      ContactStatus          status = ContactStatus::open;
-      int                    die = -1;   ///< die in contact, or closest die (-1: none in range)
-      dealii::Point<2>       stick;      ///< die point of a sticking node (die coordinates)
-      int                    sign = 0;   ///< slip direction along the die tangent (+1/-1)
-      double                 s_ref = 0.; ///< die coordinate where the current slip started
-      DieProjection          projection; ///< projection on die `die` at the current iterate
-      dealii::Point<dim>     x;          ///< current position
-      dealii::Tensor<1, dim> R;          ///< nodal contact force (residual)
-      double                 Rn = 0., Rt = 0.;
+      // geometry and forces of the current iterate
+      DieProjection          projection;  ///< projection on die `current.die`
+      dealii::Point<dim>     x;           ///< current position
+      dealii::Tensor<1, dim> R;           ///< nodal contact force (residual)
       unsigned int           changes = 0; ///< status changes in the current step
       bool fresh = false; ///< status changed at the current iterate (reaction not yet meaningful)
-
-      /** Make the current status, die, stick point and slip sign the committed ones. */
-      void commit_status()
-      {
-        c_status = status;
-        c_die = die;
-        c_stick = stick;
-        c_sign = sign;
-      }
-      /** Return status, die, stick point, slip sign and slip origin to the committed ones. */
-      void restore_status()
-      {
-        status = c_status;
-        die = c_die;
-        stick = c_stick;
-        sign = c_sign;
-        s_ref = c_s;
-      }
     };
 
     /** A status change of a node: at which fraction of the step, to which status. */
@@ -310,6 +304,7 @@ namespace ausroll::contact
     double                                 time = 0.;
     double                                 gap_tolerance = 1e-10;
     double                                 force_tolerance = 0.;
-    double area_floor = 0.; ///< tributary areas below this are zero (nodes on the axis)
+    double area_floor = 0.;      ///< tributary areas below this are zero (nodes on the axis)
+    bool   hold_changed = false; ///< hold_changed_nodes()
   };
 } // namespace ausroll::contact

@@ -56,9 +56,9 @@ namespace ausroll::scene
     //@{
     bool   assemble(const bool with_matrix, std::string &message) override;
     double residual_norm() const override;
-    /** Nested active set (`Contact/Strategy`): update the contact statuses at a converged state. */
+    /** The contact strategy's update of the statuses at a converged state (nested active set). */
     unsigned int update_constraints_at_convergence(dealii::ConditionalOStream &log) override;
-    /** True with the nested active set (curved dies leave second-order gaps after each iterate). */
+    /** As the contact strategy says (nested active set: curved dies leave second-order gaps). */
     bool                    backtrack_with_small_constraint_gaps() const override;
     double                  reference_force() const override;
     double                  constraint_violation() const override;
@@ -160,6 +160,8 @@ namespace ausroll::scene
     mechanics::BoundaryConditions<dim>           boundary_conditions;
     std::unique_ptr<mechanics::Assembler<dim>>   assembler;
     contact::ContactOperator<dim>                contact;
+    /** `Contact/Strategy`: when contact statuses change (acts on contact). */
+    std::unique_ptr<contact::StatusStrategy> contact_strategy;
     /** Declared after system_matrix: destroyed first (its kept direct factorisation refers to
         the matrix). */
     solver::LinearSolver<dim> linear_solver;
