@@ -867,7 +867,7 @@ namespace ausroll::contact
     return segs[i].normal(u);
   }
 
-  Projection DieSurface::project(const Point<2> &x, const double max_distance) const
+  ChainProjection DieSurface::project(const Point<2> &x, const double max_distance) const
   {
     const std::size_t n = segs.size();
 
@@ -893,7 +893,7 @@ namespace ausroll::contact
         best_i = static_cast<int>(i), best = lp;
     }
 
-    Projection result;
+    ChainProjection result;
     if (best_i < 0 || std::sqrt(best.distance_squared) > max_distance)
       return result;
 
@@ -978,5 +978,41 @@ namespace ausroll::contact
     }
     result.tangent = rotate_right(result.normal);
     return result;
+  }
+  // ------------------------------------------------------------------ ChainSurface
+
+  ChainSurface::ChainSurface(std::string name, DieSurface chain)
+      : shape_name(std::move(name))
+      , die(std::move(chain))
+  {
+  }
+
+  SurfaceProjection<2> ChainSurface::project(const Point<2> &x, const double max_distance) const
+  {
+    const ChainProjection p = die.project(x, max_distance);
+    SurfaceProjection<2>  result;
+    if (!p.valid)
+      return result;
+    result.valid = true;
+    result.point = p.point;
+    result.gap = p.gap;
+    result.distance = p.distance;
+    result.normal = p.normal;
+    result.tangents[0] = p.tangent;
+    result.curvatures[0] = p.curvature;
+    result.coordinates[0] = p.s;
+    result.at_edge = p.at_corner;
+    result.at_end = p.at_end;
+    return result;
+  }
+
+  Point<2> ChainSurface::point_at(const std::array<double, 1> &coordinates) const
+  {
+    return die.point_at(coordinates[0]);
+  }
+
+  std::array<double, 1> ChainSurface::coordinate_periods() const
+  {
+    return {{die.is_closed() ? die.total_length() : 0.0}};
   }
 } // namespace ausroll::contact

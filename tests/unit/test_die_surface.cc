@@ -20,7 +20,7 @@
 
 using ausroll::contact::DieSegment;
 using ausroll::contact::DieSurface;
-using ausroll::contact::Projection;
+using Projection = ausroll::contact::ChainProjection;
 using dealii::Point;
 using dealii::Tensor;
 

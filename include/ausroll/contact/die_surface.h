@@ -2,7 +2,9 @@
  * @file die_surface.h
  * Rigid die surfaces in 2D: a chain of analytic segments (straight lines, circular arcs, involute
  * flanks) given in the die's LOCAL frame, with closest-point projection, signed gap, normal,
- * tangent and curvilinear coordinate.
+ * tangent and curvilinear coordinate. This is the 2D chain engine; the shapes built from it
+ * (contact/surfaces/: flat, circle, polyline, arc line, involute gear) reach the contact code as
+ * a RigidSurface<2> through ChainSurface (end of this file).
  *
  * Conventions (hold for every segment and for the whole chain):
  * - The chain has a direction of travel; its unit tangent t points along it.
@@ -20,6 +22,8 @@
  *   material), negative for a concave one; 0 on lines and at corners.
  */
 #pragma once
+
+#include <ausroll/contact/rigid_surface.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -200,7 +204,7 @@ namespace ausroll::contact
   /**
    * Result of DieSurface::project() for a point x (all in the die's local frame).
    */
-  struct Projection
+  struct ChainProjection
   {
     /** False if no die point lies within the requested search distance (other fields unset). */
     bool valid = false;
@@ -242,7 +246,7 @@ namespace ausroll::contact
    * the corner to the point; at a concave corner the segment giving the smaller distance wins (a
    * point exactly on the bisector takes the first); each point gets exactly one projection.
    * Open ends behave like convex corners (the point "wraps" around the end) and set
-   * Projection::at_end so that a contact algorithm can release such points.
+   * ChainProjection::at_end so that a contact algorithm can release such points.
    *
    * Note: for an open chain "penetration" simply means "on the material side of the nearest
    * segment"; points far behind a short die would be reported as penetrating. Use the search
@@ -347,8 +351,8 @@ namespace ausroll::contact
      * curvilinear coordinate. Segments whose bounding box is farther than @p max_distance are
      * skipped; if no die point lies within @p max_distance the result has valid == false.
      */
-    Projection project(const dealii::Point<2> &x,
-                       double max_distance = std::numeric_limits<double>::infinity()) const;
+    ChainProjection project(const dealii::Point<2> &x,
+                            double max_distance = std::numeric_limits<double>::infinity()) const;
 
     /**
      * Point at curvilinear coordinate @p s: wrapped into [0, L) for a closed chain, clamped to the
@@ -395,5 +399,33 @@ namespace ausroll::contact
     bool closed;
     /** Length scale of the die (bounding box size) used for tolerances. */
     double scale;
+  };
+  /**
+   * A DieSurface chain seen as a RigidSurface<2> (the interface the contact code uses): the
+   * projection of the chain with s as the surface coordinate, at_corner as at_edge; closed
+   * chains have the period total_length().
+   */
+  class ChainSurface : public RigidSurface<2>
+  {
+  public:
+    /** The chain @p chain under the shape name @p name (as in the `Shape` selection). */
+    ChainSurface(std::string name, DieSurface chain);
+
+    std::string name() const override { return shape_name; }
+
+    SurfaceProjection<2> project(const dealii::Point<2> &x,
+                                 double                  max_distance
+                                 = std::numeric_limits<double>::infinity()) const override;
+
+    dealii::Point<2> point_at(const std::array<double, 1> &coordinates) const override;
+
+    std::array<double, 1> coordinate_periods() const override;
+
+    /** The chain of segments. */
+    const DieSurface &chain() const { return die; }
+
+  private:
+    std::string shape_name;
+    DieSurface  die;
   };
 } // namespace ausroll::contact
