@@ -1,5 +1,6 @@
 #include <ausroll/contact/surfaces/arc_line.h>
 #include <ausroll/contact/surfaces/circle.h>
+#include <ausroll/contact/surfaces/ellipse.h>
 #include <ausroll/contact/surfaces/flat.h>
 #include <ausroll/contact/surfaces/involute_gear.h>
 #include <ausroll/contact/surfaces/polyline.h>
@@ -47,6 +48,7 @@ namespace ausroll::contact::surfaces
            "Involute gear",
            &InvoluteGearParameters::declare_parameters,
            &make<InvoluteGearParameters>},
+          {"ellipse", "Ellipse", &EllipseParameters::declare_parameters, &make<EllipseParameters>},
       };
       return table;
     }
