@@ -867,7 +867,7 @@ namespace ausroll::contact
     return segs[i].normal(u);
   }
 
-  ChainProjection DieSurface::project(const Point<2> &x, const double max_distance) const
+  Projection DieSurface::project(const Point<2> &x, const double max_distance) const
   {
     const std::size_t n = segs.size();
 
@@ -893,7 +893,7 @@ namespace ausroll::contact
         best_i = static_cast<int>(i), best = lp;
     }
 
-    ChainProjection result;
+    Projection result;
     if (best_i < 0 || std::sqrt(best.distance_squared) > max_distance)
       return result;
 
@@ -989,8 +989,8 @@ namespace ausroll::contact
 
   SurfaceProjection<2> ChainSurface::project(const Point<2> &x, const double max_distance) const
   {
-    const ChainProjection p = die.project(x, max_distance);
-    SurfaceProjection<2>  result;
+    const Projection     p = die.project(x, max_distance);
+    SurfaceProjection<2> result;
     if (!p.valid)
       return result;
     result.valid = true;

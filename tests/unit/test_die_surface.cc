@@ -20,7 +20,7 @@
 
 using ausroll::contact::DieSegment;
 using ausroll::contact::DieSurface;
-using Projection = ausroll::contact::ChainProjection;
+using ausroll::contact::Projection;
 using dealii::Point;
 using dealii::Tensor;
 

@@ -204,7 +204,7 @@ namespace ausroll::contact
   /**
    * Result of DieSurface::project() for a point x (all in the die's local frame).
    */
-  struct ChainProjection
+  struct Projection
   {
     /** False if no die point lies within the requested search distance (other fields unset). */
     bool valid = false;
@@ -226,7 +226,8 @@ namespace ausroll::contact
     double curvature = 0.0;
     /** Curvilinear coordinate (arc length from the chain start) of x_proj. */
     double s = 0.0;
-    /** Index of the segment holding x_proj (at a corner: the segment that was found closest). */
+    /** Index of the segment holding x_proj (at a corner: the segment that was found closest; 0
+        for a 2D shape that is not a DieSurface chain, seen through RigidDie::die_surface()). */
     unsigned int segment = 0;
     /**
      * True if x_proj is a joint between two segments (the normal is then +-(x - x_proj)/|x -
@@ -246,7 +247,7 @@ namespace ausroll::contact
    * the corner to the point; at a concave corner the segment giving the smaller distance wins (a
    * point exactly on the bisector takes the first); each point gets exactly one projection.
    * Open ends behave like convex corners (the point "wraps" around the end) and set
-   * ChainProjection::at_end so that a contact algorithm can release such points.
+   * Projection::at_end so that a contact algorithm can release such points.
    *
    * Note: for an open chain "penetration" simply means "on the material side of the nearest
    * segment"; points far behind a short die would be reported as penetrating. Use the search
@@ -351,8 +352,8 @@ namespace ausroll::contact
      * curvilinear coordinate. Segments whose bounding box is farther than @p max_distance are
      * skipped; if no die point lies within @p max_distance the result has valid == false.
      */
-    ChainProjection project(const dealii::Point<2> &x,
-                            double max_distance = std::numeric_limits<double>::infinity()) const;
+    Projection project(const dealii::Point<2> &x,
+                       double max_distance = std::numeric_limits<double>::infinity()) const;
 
     /**
      * Point at curvilinear coordinate @p s: wrapped into [0, L) for a closed chain, clamped to the

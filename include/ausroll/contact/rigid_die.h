@@ -6,6 +6,7 @@
 
 #include <ausroll/contact/contact_parameters.h>
 #include <ausroll/contact/die_motion.h>
+#include <ausroll/contact/die_surface.h>
 #include <ausroll/contact/friction_law.h>
 #include <ausroll/contact/rigid_surface.h>
 
@@ -29,16 +30,6 @@ namespace ausroll::contact
   };
 
   /**
-   * A 2D projection in the terms of the 2D contact code: SurfaceProjection<2> with the arc length
-   * s = coordinates[0] and the tangent t = tangents[0] named.
-   */
-  struct Projection : public SurfaceProjection<2>
-  {
-    double               s = 0.;  ///< curvilinear coordinate (arc length) of the closest point
-    dealii::Tensor<1, 2> tangent; ///< unit tangent, the normal rotated by -90 degrees
-  };
-
-  /**
    * A 2D die surface (any RigidSurface<2>) seen by its arc length s, as the 2D contact code uses
    * it (stick points, slip along the die, closed dies): RigidDie::die_surface().
    */
@@ -51,7 +42,10 @@ namespace ausroll::contact
     {
     }
 
-    /** Closest point of the die to @p x (die coordinates) within @p max_distance. */
+    /**
+     * Closest point of the die to @p x (die coordinates) within @p max_distance, with the arc
+     * length s = coordinates[0] (a DieSurface chain answers itself, with its segment index).
+     */
     Projection project(const dealii::Point<2> &x,
                        double max_distance = std::numeric_limits<double>::infinity()) const;
 
