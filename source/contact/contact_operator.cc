@@ -239,7 +239,7 @@ namespace ausroll::contact
                                                          const double       s0) const
   {
     double            d = s1 - s0;
-    const DieSurface &surface = dies[die]->die_surface();
+    const DieProfile &surface = dies[die]->die_surface();
     if (surface.is_closed())
     {
       const double L = surface.total_length();

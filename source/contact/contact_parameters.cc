@@ -46,8 +46,9 @@ namespace ausroll::contact
                         "Label in history.csv (die_<Name>_force_x, ...).");
       prm.declare_entry("Shape",
                         "flat",
-                        Patterns::Selection("flat|circle|polyline|arc line|involute gear"),
-                        "Die surface (described in die coordinates; the Motion places it).");
+                        Patterns::Selection(surfaces::shape_selection()),
+                        "Die surface, described in die coordinates in the subsection of the same "
+                        "name (Flat, Circle, ...); the Motion places it.");
       prm.declare_entry(
           "Friction",
           "Coulomb",
@@ -75,78 +76,7 @@ namespace ausroll::contact
           "0",
           Patterns::Double(0.),
           "Nodes farther than this from the die are not projected (mm; 0: no limit).");
-      prm.declare_entry("Point", "0, 0", Patterns::Anything(), "flat: a point of the die surface.");
-      prm.declare_entry("Normal",
-                        "0, 1",
-                        Patterns::Anything(),
-                        "flat: surface normal pointing out of the die, towards the workpiece.");
-      prm.declare_entry("Center", "0, 0", Patterns::Anything(), "circle: centre.");
-      prm.declare_entry("Radius", "1", Patterns::Double(0.), "circle: radius (mm).");
-      prm.declare_entry(
-          "Material inside",
-          "true",
-          Patterns::Bool(),
-          "circle: true for a roll or punch (die material inside), false for a hole.");
-      prm.declare_entry(
-          "Points",
-          "",
-          Patterns::Anything(),
-          "polyline / arc line: 'x, y; x, y; ...' in travel order; the die material is "
-          "on the right of the direction of travel.");
-      prm.declare_entry("Points file",
-                        "",
-                        Patterns::Anything(),
-                        "polyline / arc line: text file with two columns x y ('#' comments), "
-                        "relative to the .prm file; used when Points is empty.");
-      prm.declare_entry("Fillet radii",
-                        "",
-                        Patterns::Anything(),
-                        "arc line: radius of the tangent arc at each interior corner (one value "
-                        "for all, or one per corner).");
-      prm.declare_entry("Number of teeth", "57", Patterns::Integer(3), "involute gear: teeth z.");
-      prm.declare_entry("Diametral pitch",
-                        "8.5",
-                        Patterns::Double(0.),
-                        "involute gear: teeth per inch of pitch diameter (0: use Module).");
-      prm.declare_entry("Module",
-                        "0",
-                        Patterns::Double(0.),
-                        "involute gear: module m (mm), used when Diametral pitch = 0.");
-      prm.declare_entry("Pressure angle",
-                        "22",
-                        Patterns::Double(0., 45.),
-                        "involute gear: pressure angle (degrees).");
-      prm.declare_entry("Addendum",
-                        "-1",
-                        Patterns::Double(),
-                        "involute gear: addendum (mm); negative: 1 module.");
-      prm.declare_entry("Dedendum",
-                        "-1",
-                        Patterns::Double(),
-                        "involute gear: dedendum (mm); negative: 1.25 module.");
-      prm.declare_entry("Tooth thickness",
-                        "-1",
-                        Patterns::Double(),
-                        "involute gear: tooth thickness at the pitch circle (mm); negative: half "
-                        "the circular pitch.");
-      prm.declare_entry("Root fillet radius",
-                        "0",
-                        Patterns::Double(0.),
-                        "involute gear: root fillet radius (mm).");
-      prm.declare_entry("Tip radius",
-                        "0",
-                        Patterns::Double(0.),
-                        "involute gear: radius of the tip rounds, arcs tangent to the flank and "
-                        "the outside circle (mm; 0: sharp tip corners).");
-      prm.declare_entry("Tooth axis angle",
-                        "0",
-                        Patterns::Double(),
-                        "involute gear: direction of the axis of tooth 0 (degrees from +x).");
-      prm.declare_entry(
-          "Teeth in sector",
-          "0",
-          Patterns::Integer(0),
-          "involute gear: build only this many teeth around tooth 0 (0: whole gear).");
+      surfaces::declare_shape_parameters(prm);
 
       prm.enter_subsection("Motion");
       prm.declare_entry("Type",
@@ -210,6 +140,11 @@ namespace ausroll::contact
     prm.leave_subsection();
   }
 
+  std::map<std::string, std::string> ContactParameters::moved_entries()
+  {
+    return surfaces::moved_die_entries(max_dies);
+  }
+
   void ContactParameters::parse_parameters(ParameterHandler  &prm,
                                            const std::string &input_directory)
   {
@@ -233,12 +168,9 @@ namespace ausroll::contact
       require(!d.name.empty() && d.name.find_first_of(" ,;") == std::string::npos,
               path + "Name",
               "must be a single word");
-      const std::string shape = prm.get("Shape");
-      d.shape = shape == "flat"       ? DieShape::flat
-                : shape == "circle"   ? DieShape::circle
-                : shape == "polyline" ? DieShape::polyline
-                : shape == "arc line" ? DieShape::arc_line
-                                      : DieShape::involute_gear;
+      d.shape = prm.get("Shape");
+      d.surface_path = surfaces::shape_path(d.shape, path);
+      d.surface = surfaces::parse_shape_parameters(d.shape, prm, path, input_directory);
       const std::string friction = prm.get("Friction");
       d.friction = friction == "frictionless" ? FrictionLawType::frictionless
                    : friction == "Coulomb"    ? FrictionLawType::coulomb
@@ -256,27 +188,6 @@ namespace ausroll::contact
       d.candidate_boundaries
           = parse_unsigned_list(prm.get("Candidate boundaries"), path + "Candidate boundaries");
       d.search_distance = prm.get_double("Search distance");
-      d.point = parse_point<2>(prm.get("Point"), path + "Point");
-      d.normal = parse_point<2>(prm.get("Normal"), path + "Normal");
-      d.center = parse_point<2>(prm.get("Center"), path + "Center");
-      d.radius = prm.get_double("Radius");
-      d.material_inside = prm.get_bool("Material inside");
-      d.points = prm.get("Points");
-      d.points_file = prm.get("Points file");
-      if (!d.points_file.empty() && d.points_file[0] != '/')
-        d.points_file = input_directory + d.points_file;
-      d.fillet_radii = parse_double_list(prm.get("Fillet radii"), path + "Fillet radii");
-      d.teeth = prm.get_integer("Number of teeth");
-      d.diametral_pitch = prm.get_double("Diametral pitch");
-      d.module = prm.get_double("Module");
-      d.pressure_angle = prm.get_double("Pressure angle");
-      d.addendum = prm.get_double("Addendum");
-      d.dedendum = prm.get_double("Dedendum");
-      d.tooth_thickness = prm.get_double("Tooth thickness");
-      d.fillet_radius = prm.get_double("Root fillet radius");
-      d.tip_radius = prm.get_double("Tip radius");
-      d.tooth_axis_angle = prm.get_double("Tooth axis angle");
-      d.sector_teeth = prm.get_integer("Teeth in sector");
 
       prm.enter_subsection("Motion");
       const std::string motion = prm.get("Type");
@@ -301,18 +212,6 @@ namespace ausroll::contact
       prm.leave_subsection();
 
       // Semantic checks.
-      if (d.shape == DieShape::flat)
-        require(d.normal.norm() > 0., path + "Normal", "must not be the zero vector");
-      if (d.shape == DieShape::circle)
-        require(d.radius > 0., path + "Radius", "must be positive");
-      if (d.shape == DieShape::polyline || d.shape == DieShape::arc_line)
-        require(!d.points.empty() || !d.points_file.empty(),
-                path + "Points",
-                "give the die outline in Points or Points file");
-      if (d.shape == DieShape::involute_gear)
-        require(d.diametral_pitch > 0. || d.module > 0.,
-                path + "Module",
-                "set Diametral pitch or Module");
       if (d.motion == MotionType::rolling)
       {
         require(

@@ -979,4 +979,40 @@ namespace ausroll::contact
     result.tangent = rotate_right(result.normal);
     return result;
   }
+  // ------------------------------------------------------------------ ChainSurface
+
+  ChainSurface::ChainSurface(std::string name, DieSurface chain)
+      : shape_name(std::move(name))
+      , die(std::move(chain))
+  {
+  }
+
+  SurfaceProjection<2> ChainSurface::project(const Point<2> &x, const double max_distance) const
+  {
+    const Projection     p = die.project(x, max_distance);
+    SurfaceProjection<2> result;
+    if (!p.valid)
+      return result;
+    result.valid = true;
+    result.point = p.point;
+    result.gap = p.gap;
+    result.distance = p.distance;
+    result.normal = p.normal;
+    result.tangents[0] = p.tangent;
+    result.curvatures[0] = p.curvature;
+    result.coordinates[0] = p.s;
+    result.at_edge = p.at_corner;
+    result.at_end = p.at_end;
+    return result;
+  }
+
+  Point<2> ChainSurface::point_at(const std::array<double, 1> &coordinates) const
+  {
+    return die.point_at(coordinates[0]);
+  }
+
+  std::array<double, 1> ChainSurface::coordinate_periods() const
+  {
+    return {{die.is_closed() ? die.total_length() : 0.0}};
+  }
 } // namespace ausroll::contact

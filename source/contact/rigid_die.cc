@@ -1,7 +1,6 @@
 #include <ausroll/contact/rigid_die.h>
 #include <ausroll/core/exceptions.h>
 #include <ausroll/core/parse_utilities.h>
-#include <ausroll/geometry/involute_gear.h>
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/numbers.h>
@@ -10,6 +9,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 namespace ausroll::contact
 {
@@ -56,90 +56,6 @@ namespace ausroll::contact
       };
       f(0.);
       return f;
-    }
-
-    std::unique_ptr<DieSurface> make_surface(const DieParameters &p, const std::string &path)
-    {
-      switch (p.shape)
-      {
-        case DieShape::flat:
-        {
-          const Tensor<1, 2> n = p.normal / p.normal.norm();
-          // travel direction with the die material on the right: t = n rotated by -90 degrees
-          const Tensor<1, 2> direction({n[1], -n[0]});
-          return std::make_unique<DieSurface>(DieSurface::flat(p.point, direction));
-        }
-        case DieShape::circle:
-          return std::make_unique<DieSurface>(
-              DieSurface::circle(p.center, p.radius, p.material_inside));
-        case DieShape::polyline:
-        case DieShape::arc_line:
-        {
-          std::vector<Point<2>> points;
-          if (!p.points.empty())
-            for (const std::string &item : split_and_trim(p.points, ';'))
-              points.push_back(parse_point<2>(item, path + "Points"));
-          else
-            try
-            {
-              points = DieSurface::read_points_file(p.points_file);
-            }
-            catch (const std::exception &e)
-            {
-              throw InputError(path + "Points file: " + e.what());
-            }
-          require(points.size() >= 2, path + "Points", "needs at least two points");
-          try
-          {
-            if (p.shape == DieShape::polyline)
-              return std::make_unique<DieSurface>(DieSurface::polyline(points, false, true));
-            require(!p.fillet_radii.empty(), path + "Fillet radii", "needs at least one radius");
-            return std::make_unique<DieSurface>(
-                DieSurface::arc_line_composite(points, p.fillet_radii, false, true));
-          }
-          catch (const InputError &)
-          {
-            throw;
-          }
-          catch (const std::exception &e)
-          {
-            throw InputError(path + "Points: " + e.what());
-          }
-        }
-        case DieShape::involute_gear:
-        {
-          geometry::ToothProportions proportions;
-          if (p.addendum >= 0.)
-            proportions.addendum = p.addendum;
-          if (p.dedendum >= 0.)
-            proportions.dedendum = p.dedendum;
-          if (p.tooth_thickness > 0.)
-            proportions.pitch_tooth_thickness = p.tooth_thickness;
-          proportions.root_fillet_radius = p.fillet_radius;
-          try
-          {
-            const geometry::InvoluteGear gear
-                = p.diametral_pitch > 0.
-                      ? geometry::InvoluteGear::from_diametral_pitch(
-                          p.teeth, p.diametral_pitch, p.pressure_angle * degree, proportions)
-                      : geometry::InvoluteGear(
-                          p.teeth, p.module, p.pressure_angle * degree, proportions);
-            return std::make_unique<DieSurface>(DieSurface::involute_gear(
-                gear, p.tooth_axis_angle * degree, p.sector_teeth, p.tip_radius));
-          }
-          catch (const EntryError &e)
-          {
-            // the gear and the die-surface factory name the entry that failed
-            throw InputError(path + e.entry() + ": " + e.what_is_wrong());
-          }
-          catch (const std::exception &e)
-          {
-            throw InputError(path + "Shape = involute gear: invalid gear (" + std::string(e.what())
-                             + ")");
-          }
-        }
-      }
-      return nullptr;
     }
 
     std::unique_ptr<DieMotion> make_motion(const DieParameters &p, const std::string &path)
@@ -197,18 +113,41 @@ namespace ausroll::contact
       , friction(create_friction_law(p))
       , search_distance(p.search_distance > 0. ? p.search_distance
                                                : std::numeric_limits<double>::infinity())
+      , shape(p.surface ? p.surface->create(p.surface_path)
+                        : throw std::logic_error("RigidDie: DieParameters without a shape"))
+      , profile(*shape)
       , candidates(p.candidate_boundaries.begin(), p.candidate_boundaries.end())
   {
     const std::string path = "Contact/Die " + std::to_string(index) + "/";
-    surface = make_surface(p, path);
     motion = make_motion(p, path);
+  }
+
+  Projection DieProfile::project(const Point<2> &x, const double max_distance) const
+  {
+    if (const auto *chain = dynamic_cast<const ChainSurface *>(surface))
+      return chain->chain().project(x, max_distance);
+    const SurfaceProjection<2> q = surface->project(x, max_distance);
+    Projection                 p;
+    if (!q.valid)
+      return p;
+    p.valid = true;
+    p.point = q.point;
+    p.gap = q.gap;
+    p.distance = q.distance;
+    p.normal = q.normal;
+    p.tangent = q.tangents[0];
+    p.curvature = q.curvatures[0];
+    p.s = q.coordinates[0];
+    p.at_corner = q.at_edge;
+    p.at_end = q.at_end;
+    return p;
   }
 
   DieProjection RigidDie::project(const Point<2> &x, const double t) const
   {
-    const DiePose    pose = motion->pose(t);
-    const Projection p = surface->project(pose.to_local(x), search_distance);
-    DieProjection    result;
+    const DiePose              pose = motion->pose(t);
+    const SurfaceProjection<2> p = shape->project(pose.to_local(x), search_distance);
+    DieProjection              result;
     if (!p.valid)
       return result;
     result.valid = true;
@@ -216,8 +155,8 @@ namespace ausroll::contact
     result.local_point = p.point;
     result.point = pose.to_global(p.point);
     result.normal = pose.rotate_vector_to_global(p.normal);
-    result.tangent = pose.rotate_vector_to_global(p.tangent);
-    result.s = p.s;
+    result.tangent = pose.rotate_vector_to_global(p.tangents[0]);
+    result.s = p.coordinates[0];
     return result;
   }
 

@@ -128,7 +128,9 @@ namespace ausroll
      * "file:line: [in subsection 'X':] message" from a deal.II parse error, whose text starts
      * with "Line <N> of file <name>:" (N counts lines of the expanded @p text).
      */
-    std::string parse_error_message(const ParameterText &text, const ExceptionBase &e)
+    std::string parse_error_message(const ParameterText                      &text,
+                                    const ExceptionBase                      &e,
+                                    const std::map<std::string, std::string> &moved_entries)
     {
       std::string message = user_message(e);
       const auto  open = message.find("Line <");
@@ -140,9 +142,19 @@ namespace ausroll
       if (colon != std::string::npos)
         message = trim(message.substr(colon + 2));
       const std::string path = subsection_at_line(text.text, n);
-      const LineOrigin  where = n >= 1 && n <= text.origin.size() ? text.origin[n - 1]
-                                : text.origin.empty()             ? LineOrigin{"input", 0}
-                                                                  : text.origin.back();
+      // an entry that moved: say where it is now
+      const std::string unknown = "No entry with name <";
+      if (message.rfind(unknown, 0) == 0 && message.find('>') != std::string::npos)
+      {
+        const std::string entry
+            = message.substr(unknown.size(), message.find('>') - unknown.size());
+        const auto moved = moved_entries.find((path.empty() ? "" : path + "/") + entry);
+        if (moved != moved_entries.end())
+          message = "`" + moved->first + "` moved to " + moved->second;
+      }
+      const LineOrigin where = n >= 1 && n <= text.origin.size() ? text.origin[n - 1]
+                               : text.origin.empty()             ? LineOrigin{"input", 0}
+                                                                 : text.origin.back();
       return where.file + (where.line > 0 ? ":" + std::to_string(where.line) : std::string()) + ": "
              + (path.empty() ? "" : "in subsection '" + path + "': ") + message;
     }
@@ -199,9 +211,10 @@ namespace ausroll
     return o;
   }
 
-  void parse_parameter_text(ParameterHandler                     &prm,
-                            const ParameterText                  &text,
-                            const std::vector<ParameterOverride> &overrides)
+  void parse_parameter_text(ParameterHandler                         &prm,
+                            const ParameterText                      &text,
+                            const std::vector<ParameterOverride>     &overrides,
+                            const std::map<std::string, std::string> &moved_entries)
   {
     try
     {
@@ -213,7 +226,7 @@ namespace ausroll
     }
     catch (const ExceptionBase &e)
     {
-      throw InputError(parse_error_message(text, e));
+      throw InputError(parse_error_message(text, e, moved_entries));
     }
     for (const ParameterOverride &o : overrides)
     {
@@ -237,7 +250,7 @@ namespace ausroll
       }
       catch (const ExceptionBase &e)
       {
-        throw InputError(parse_error_message(line, e));
+        throw InputError(parse_error_message(line, e, moved_entries));
       }
     }
   }

@@ -52,7 +52,7 @@ namespace ausroll::scene
     const ParameterText text = expand_parameter_file(filename);
     ParameterHandler    prm;
     SceneParameters::declare_parameters(prm);
-    parse_parameter_text(prm, text, overrides);
+    parse_parameter_text(prm, text, overrides, contact::ContactParameters::moved_entries());
     const std::map<std::string, std::string> entries = flatten_parameters(prm);
     check_number_magnitudes(entries);
 

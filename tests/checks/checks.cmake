@@ -543,3 +543,8 @@ ausroll_add_parallel_check(NAME gear_rolling_adaptive_short_np2
 # <= 3 Newton iterations (force within 2 % of Q2 16x12), indentation to t = 0.75 with <= 2
 # cutbacks (Prandtl within 15 %). Reasons of each tolerance in the script. About 40 s of CPU.
 ausroll_add_script_check(NAME hard_cases SCRIPT ${AUSROLL_CHECKS_DIR}/check_hard_cases.py)
+
+# The elliptic die (contact/surfaces/ellipse) in a whole scene: disk_rolling_short with the roll
+# as an ellipse a = b = R equals the circle die to 1e-10 (measured 3.8e-13); an oval roll
+# (b = 0.98 a) runs to the end pressing the ring. About 2 s.
+ausroll_add_script_check(NAME ellipse_die SCRIPT ${AUSROLL_CHECKS_DIR}/check_ellipse_die.py)

@@ -87,9 +87,9 @@ TEST(ParameterFile, NumbersBeyond1e30AreRefused)
                                            {"Scene name", "nan test"}}));
   const std::string m = message_of(
       [] {
-        check_number_magnitudes({{"Contact/Die 0/Radius", "1e308"}});
+        check_number_magnitudes({{"Contact/Die 0/Circle/Radius", "1e308"}});
       });
-  EXPECT_EQ(m.rfind("Contact/Die 0/Radius: '1e308' is out of range", 0), 0u) << m;
+  EXPECT_EQ(m.rfind("Contact/Die 0/Circle/Radius: '1e308' is out of range", 0), 0u) << m;
   EXPECT_THROW(check_number_magnitudes({{"Loading/End time", "inf"}}), InputError);
   EXPECT_THROW(check_number_magnitudes({{"Boundary conditions/Condition 0/Value", "t*1e31"}}),
                InputError);

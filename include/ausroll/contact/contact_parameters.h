@@ -4,9 +4,13 @@
  */
 #pragma once
 
+#include <ausroll/contact/surfaces/surface_factory.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,16 +36,6 @@ namespace ausroll::contact
     coulomb_capped_by_shear ///< |t_t| <= min(mu p_n, m k)
   };
 
-  /** Shape of a die (`Shape`). */
-  enum class DieShape
-  {
-    flat,         ///< straight line through `Point` with outward `Normal`
-    circle,       ///< circle (`Center`, `Radius`); a roll or a cylindrical punch
-    polyline,     ///< open chain through `Points` (inline) or `Points file`
-    arc_line,     ///< polyline whose interior corners are rounded with `Fillet radii`
-    involute_gear ///< spur gear (or a sector of it) with involute flanks
-  };
-
   /** Motion of a die (`Motion/Type`). */
   enum class MotionType
   {
@@ -53,8 +47,7 @@ namespace ausroll::contact
   /** One `Contact/Die N` subsection. */
   struct DieParameters
   {
-    std::string     name = "die";           ///< `Name` (history columns die_<name>_...)
-    DieShape        shape = DieShape::flat; ///< `Shape`
+    std::string     name = "die"; ///< `Name` (history columns die_<name>_...)
     FrictionLawType friction = FrictionLawType::coulomb; ///< `Friction`
     double friction_coefficient = 0.; ///< `Friction coefficient` mu (Coulomb, capped Coulomb)
     double friction_factor = 0.;      ///< `Friction factor` m (Tresca, capped Coulomb)
@@ -64,27 +57,13 @@ namespace ausroll::contact
     std::vector<unsigned int> candidate_boundaries; ///< `Candidate boundaries` of the workpiece
     double                    search_distance = 0.; ///< `Search distance` (0: unlimited)
 
-    // shapes (die-local coordinates, at t = 0 when the motion is the identity)
-    dealii::Point<2> point{0., 0.};  ///< flat: `Point`
-    dealii::Point<2> normal{0., 1.}; ///< flat: `Normal` (out of the die, towards the workpiece)
-    dealii::Point<2> center{0., 0.}; ///< circle: `Center`
-    double           radius = 1.;    ///< circle: `Radius`
-    bool             material_inside = true; ///< circle: `Material inside` (roll/punch) or a hole
-    std::string      points;                 ///< polyline/arc line: `Points` "x, y; x, y; ..."
-    std::string      points_file;            ///< polyline/arc line: `Points file`
-    std::vector<double> fillet_radii;        ///< arc line: `Fillet radii`
-    // involute gear
-    unsigned int teeth = 57;            ///< `Number of teeth`
-    double       diametral_pitch = 8.5; ///< `Diametral pitch` (1/inch; 0: use Module)
-    double       module = 0.;           ///< `Module` (mm)
-    double       pressure_angle = 22.;  ///< `Pressure angle` (degrees)
-    double       addendum = -1.;        ///< `Addendum` (mm; <0: 1 module)
-    double       dedendum = -1.;        ///< `Dedendum` (mm; <0: 1.25 module)
-    double tooth_thickness = -1.;  ///< `Tooth thickness` at the pitch circle (mm; <0: half pitch)
-    double fillet_radius = 0.;     ///< `Root fillet radius` (mm)
-    double tip_radius = 0.;        ///< `Tip radius` (mm; 0: sharp tip corners)
-    double tooth_axis_angle = 0.;  ///< `Tooth axis angle` (degrees)
-    unsigned int sector_teeth = 0; ///< `Teeth in sector` (0: whole gear)
+    /** `Shape`: the name of a 2D shape (contact/surfaces/surface_factory.h). */
+    std::string shape = "flat";
+    /** The entries of the shape's own subsection `Contact/Die N/<Shape>` (die-local
+        coordinates, at t = 0 when the motion is the identity); set by parse_parameters(). */
+    std::shared_ptr<const surfaces::ShapeParameters> surface;
+    /** Full path of that subsection ("Contact/Die 0/Circle/") for error messages. */
+    std::string surface_path;
 
     // motion
     MotionType       motion = MotionType::fixed; ///< `Motion/Type`
@@ -114,6 +93,12 @@ namespace ausroll::contact
 
     /** Declare subsection `Contact`. */
     static void declare_parameters(dealii::ParameterHandler &prm);
+    /**
+     * The entries an old `.prm` file may still set and where they are now: old full path ->
+     * new full path(s) (the shape entries moved from `Contact/Die N` into one subsection per
+     * shape). Reading the file turns such an unknown entry into this message.
+     */
+    static std::map<std::string, std::string> moved_entries();
     /** Read subsection `Contact`. Files are resolved relative to @p input_directory. */
     void parse_parameters(dealii::ParameterHandler &prm, const std::string &input_directory);
 

@@ -2,7 +2,9 @@
  * @file die_surface.h
  * Rigid die surfaces in 2D: a chain of analytic segments (straight lines, circular arcs, involute
  * flanks) given in the die's LOCAL frame, with closest-point projection, signed gap, normal,
- * tangent and curvilinear coordinate.
+ * tangent and curvilinear coordinate. This is the 2D chain engine; the shapes built from it
+ * (contact/surfaces/: flat, circle, polyline, arc line, involute gear) reach the contact code as
+ * a RigidSurface<2> through ChainSurface (end of this file).
  *
  * Conventions (hold for every segment and for the whole chain):
  * - The chain has a direction of travel; its unit tangent t points along it.
@@ -20,6 +22,8 @@
  *   material), negative for a concave one; 0 on lines and at corners.
  */
 #pragma once
+
+#include <ausroll/contact/rigid_surface.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -222,7 +226,8 @@ namespace ausroll::contact
     double curvature = 0.0;
     /** Curvilinear coordinate (arc length from the chain start) of x_proj. */
     double s = 0.0;
-    /** Index of the segment holding x_proj (at a corner: the segment that was found closest). */
+    /** Index of the segment holding x_proj (at a corner: the segment that was found closest; 0
+        for a 2D shape that is not a DieSurface chain, seen through RigidDie::die_surface()). */
     unsigned int segment = 0;
     /**
      * True if x_proj is a joint between two segments (the normal is then +-(x - x_proj)/|x -
@@ -395,5 +400,33 @@ namespace ausroll::contact
     bool closed;
     /** Length scale of the die (bounding box size) used for tolerances. */
     double scale;
+  };
+  /**
+   * A DieSurface chain seen as a RigidSurface<2> (the interface the contact code uses): the
+   * projection of the chain with s as the surface coordinate, at_corner as at_edge; closed
+   * chains have the period total_length().
+   */
+  class ChainSurface : public RigidSurface<2>
+  {
+  public:
+    /** The chain @p chain under the shape name @p name (as in the `Shape` selection). */
+    ChainSurface(std::string name, DieSurface chain);
+
+    std::string name() const override { return shape_name; }
+
+    SurfaceProjection<2> project(const dealii::Point<2> &x,
+                                 double                  max_distance
+                                 = std::numeric_limits<double>::infinity()) const override;
+
+    dealii::Point<2> point_at(const std::array<double, 1> &coordinates) const override;
+
+    std::array<double, 1> coordinate_periods() const override;
+
+    /** The chain of segments. */
+    const DieSurface &chain() const { return die; }
+
+  private:
+    std::string shape_name;
+    DieSurface  die;
   };
 } // namespace ausroll::contact

@@ -8,7 +8,9 @@
 #include <ausroll/contact/die_motion.h>
 #include <ausroll/contact/die_surface.h>
 #include <ausroll/contact/friction_law.h>
+#include <ausroll/contact/rigid_surface.h>
 
+#include <limits>
 #include <memory>
 #include <set>
 #include <string>
@@ -28,7 +30,41 @@ namespace ausroll::contact
   };
 
   /**
-   * A rigid die given by its surface (DieSurface, die coordinates) and its motion
+   * A 2D die surface (any RigidSurface<2>) seen by its arc length s, as the 2D contact code uses
+   * it (stick points, slip along the die, closed dies): RigidDie::die_surface().
+   */
+  class DieProfile
+  {
+  public:
+    /** View of @p surface (which must outlive the view). */
+    explicit DieProfile(const RigidSurface<2> &surface)
+        : surface(&surface)
+    {
+    }
+
+    /**
+     * Closest point of the die to @p x (die coordinates) within @p max_distance, with the arc
+     * length s = coordinates[0] (a DieSurface chain answers itself, with its segment index).
+     */
+    Projection project(const dealii::Point<2> &x,
+                       double max_distance = std::numeric_limits<double>::infinity()) const;
+
+    /** Point at arc length @p s (wrapped on a closed die, clamped on an open one). */
+    dealii::Point<2> point_at(const double s) const { return surface->point_at({{s}}); }
+
+    /** Whether the die is a closed curve (s periodic). */
+    bool is_closed() const { return surface->coordinate_periods()[0] > 0.; }
+
+    /** Period of s on a closed die (its perimeter). */
+    double total_length() const { return surface->coordinate_periods()[0]; }
+
+  private:
+    const RigidSurface<2> *surface;
+  };
+
+  /**
+   * A rigid die given by its surface (a RigidSurface<2> of one of the shapes of
+   * contact/surfaces/, die coordinates) and its motion
    * (DieMotion: pose as a function of pseudo-time), with the friction law of `Friction` and the
    * workpiece boundaries (`Candidate boundaries`) that may touch it.
    */
@@ -53,8 +89,11 @@ namespace ausroll::contact
       return dynamic_cast<const RollingMotion *>(motion.get());
     }
 
-    /** The die surface in die coordinates. */
-    const DieSurface &die_surface() const { return *surface; }
+    /** The die surface in die coordinates (the dimension-generic interface). */
+    const RigidSurface<2> &surface() const { return *shape; }
+
+    /** The die surface in die coordinates seen by its arc length s (the 2D contact code). */
+    const DieProfile &die_surface() const { return profile; }
 
     /** True if workpiece boundary @p id may touch this die. */
     bool is_candidate(const unsigned int id) const
@@ -67,8 +106,9 @@ namespace ausroll::contact
     const double                             search_distance; ///< `Search distance` (infinite if 0)
 
   private:
-    std::unique_ptr<DieSurface> surface;
-    std::unique_ptr<DieMotion>  motion;
-    std::set<unsigned int>      candidates;
+    std::unique_ptr<const RigidSurface<2>> shape;
+    DieProfile                             profile;
+    std::unique_ptr<DieMotion>             motion;
+    std::set<unsigned int>                 candidates;
   };
 } // namespace ausroll::contact

@@ -27,6 +27,7 @@
 
 #include <array>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 namespace ausroll::contact
@@ -84,5 +85,26 @@ namespace ausroll::contact
     virtual SurfaceProjection<dim> project(const dealii::Point<dim> &x,
                                            double                    max_distance
                                            = std::numeric_limits<double>::infinity()) const = 0;
+
+    /**
+     * The surface point with surface coordinates @p coordinates (the inverse of
+     * SurfaceProjection::coordinates: point_at(project(x).coordinates) = project(x).point).
+     * Coordinates outside the surface are wrapped where the coordinate is periodic (see
+     * coordinate_periods()) and clamped to the surface otherwise. The 2D contact code uses it for
+     * the stick point of a node that stops slipping: every 2D shape implements it; a shape
+     * without it (the default) throws std::logic_error naming the shape.
+     */
+    virtual dealii::Point<dim> point_at(const std::array<double, dim - 1> &coordinates) const
+    {
+      (void)coordinates;
+      throw std::logic_error(name() + ": point_at(surface coordinates) is not available");
+    }
+
+    /**
+     * Period of each surface coordinate, 0 for a coordinate that is not periodic (2D: the total
+     * length of a closed curve, 0 for an open one). Differences of a periodic coordinate are
+     * taken modulo the period (slip distances along a closed die).
+     */
+    virtual std::array<double, dim - 1> coordinate_periods() const { return {}; }
   };
 } // namespace ausroll::contact

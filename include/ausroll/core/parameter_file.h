@@ -53,10 +53,13 @@ namespace ausroll
   /**
    * Parse @p text into @p prm, then the @p overrides (each validated like a line of the file:
    * an unknown entry or a value not matching its pattern is an InputError naming the argument).
+   * An unknown entry listed in @p moved_entries (old full path "Section/Entry" -> where it is
+   * now) gets the message "`Section/Entry` moved to <new path>" after the file and line.
    */
-  void parse_parameter_text(dealii::ParameterHandler             &prm,
-                            const ParameterText                  &text,
-                            const std::vector<ParameterOverride> &overrides);
+  void parse_parameter_text(dealii::ParameterHandler                 &prm,
+                            const ParameterText                      &text,
+                            const std::vector<ParameterOverride>     &overrides,
+                            const std::map<std::string, std::string> &moved_entries = {});
 
   /** Every entry of @p prm as "Section/Sub/Entry" -> value (the parsed values). */
   std::map<std::string, std::string> flatten_parameters(const dealii::ParameterHandler &prm);

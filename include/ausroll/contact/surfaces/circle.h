@@ -1,0 +1,31 @@
+/**
+ * @file circle.h
+ * Die shape `circle` (subsection `Contact/Die N/Circle`): a roll, a round punch or a round hole.
+ */
+#pragma once
+
+#include <ausroll/contact/surfaces/surface_factory.h>
+
+#include <deal.II/base/point.h>
+
+namespace ausroll::contact::surfaces
+{
+  /**
+   * Subsection `Circle`: full circle (`Center`, `Radius`), a DieSurface::circle() chain: with
+   * `Material inside` (a roll or punch) travelled clockwise with the normal outward, otherwise
+   * (a hole) counter-clockwise with the normal towards the centre; s = 0 at centre + (r, 0).
+   */
+  struct CircleParameters : public ShapeParameters
+  {
+    dealii::Point<2> center{0., 0.};         ///< `Center`
+    double           radius = 1.;            ///< `Radius` (mm)
+    bool             material_inside = true; ///< `Material inside`
+
+    /** Declare the entries of subsection `Circle` (the caller has entered it). */
+    static void                            declare_parameters(dealii::ParameterHandler &prm);
+    void                                   parse(dealii::ParameterHandler &prm,
+                                                 const std::string        &path,
+                                                 const std::string        &input_directory) override;
+    std::unique_ptr<const RigidSurface<2>> create(const std::string &path) const override;
+  };
+} // namespace ausroll::contact::surfaces
