@@ -144,10 +144,12 @@ namespace ausroll::solver
         // automatic: KLU on one rank for small systems (less set-up per solve; solver study in
         // doc/benchmarks.md: KLU 4.3 ms vs MUMPS 6.9 ms per solve at 1728 DoFs, equal near 10^4),
         // MUMPS otherwise (distributed, and 2-4x faster than KLU from 6e4 DoFs).
+        // In 3D MUMPS always: KLU's fill-in grows much faster (3D block, doc/benchmarks.md "3D
+        // linear solver": equal at 2187 DoFs, 8x slower at 14739).
         const bool mumps
             = parameters.direct_package == "MUMPS"
               || (parameters.direct_package == "automatic"
-                  && (A.m() >= automatic_klu_limit
+                  && (dim == 3 || A.m() >= automatic_klu_limit
                       || Utilities::MPI::n_mpi_processes(A.get_mpi_communicator()) > 1));
         (void)control;
         try
@@ -193,6 +195,7 @@ namespace ausroll::solver
         TrilinosWrappers::PreconditionAMG amg;
         amg.initialize(A, list);
         info.setup_seconds = timer.wall_time();
+        info.setup_cpu_seconds = timer.cpu_time();
 
         SolverControl control(parameters.max_iterations,
                               parameters.relative_tolerance * b.l2_norm());

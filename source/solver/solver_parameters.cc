@@ -42,7 +42,7 @@ namespace ausroll::solver
         "with the rigid-body modes; automatic: direct for every 2D system and for 3D systems "
         "with fewer unknowns than Automatic iterative threshold, iterative for larger 3D ones.");
     prm.declare_entry("Automatic iterative threshold",
-                      "1e5",
+                      "1e4",
                       Patterns::Double(0.),
                       "Type = automatic: 3D systems with at least this many unknowns are solved "
                       "iteratively (the measured cross-over of direct and AMG solves, "
@@ -51,7 +51,8 @@ namespace ausroll::solver
                       "automatic",
                       Patterns::Selection("automatic|MUMPS|KLU"),
                       "Amesos package for Type = direct: automatic (KLU on one MPI rank below "
-                      "10^4 unknowns, MUMPS otherwise), MUMPS (runs in parallel), KLU (serial).");
+                      "10^4 unknowns in 2D, MUMPS otherwise and always in 3D), MUMPS (runs in "
+                      "parallel), KLU (serial).");
     prm.declare_entry("Iterative method",
                       "GMRES",
                       Patterns::Selection("GMRES|CG"),

@@ -194,7 +194,7 @@ TEST(Block3d, AutomaticLinearSolverFollowsThreshold)
     solver::SolverParameters defaults;
     defaults.parse_parameters(prm);
     EXPECT_EQ(defaults.linear.type, solver::LinearSolverType::automatic);
-    EXPECT_EQ(defaults.linear.automatic_iterative_threshold, 1e5);
+    EXPECT_EQ(defaults.linear.automatic_iterative_threshold, 1e4);
     prm.parse_input_from_string("subsection Solver\nsubsection Linear solver\n"
                                 "set Automatic iterative threshold = 500\nend\nend\n");
     solver::SolverParameters changed;
@@ -205,8 +205,8 @@ TEST(Block3d, AutomaticLinearSolverFollowsThreshold)
   const solver::LinearSolver<2>  two(p);
   const solver::LinearSolver<3>  three(p);
   EXPECT_EQ(two.resolved_type(100000000), solver::LinearSolverType::direct);
-  EXPECT_EQ(three.resolved_type(99999), solver::LinearSolverType::direct);
-  EXPECT_EQ(three.resolved_type(100000), solver::LinearSolverType::iterative);
+  EXPECT_EQ(three.resolved_type(9999), solver::LinearSolverType::direct);
+  EXPECT_EQ(three.resolved_type(10000), solver::LinearSolverType::iterative);
   p.type = solver::LinearSolverType::direct;
   EXPECT_EQ(solver::LinearSolver<3>(p).resolved_type(100000000), solver::LinearSolverType::direct);
   p.type = solver::LinearSolverType::iterative;

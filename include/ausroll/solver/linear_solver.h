@@ -27,8 +27,9 @@ namespace ausroll::solver
     unsigned int iterations = 0;     ///< Krylov iterations (0 for the direct solver)
     bool         iterative = false;  ///< the iterative solver was used (Type or automatic choice)
     double       setup_seconds = 0.; ///< wall time of the AMG set-up (0 for the direct solver)
-    double       seconds = 0.;       ///< wall time of set-up + solve
-    double       cpu_seconds = 0.;   ///< CPU time of set-up + solve on this process
+    double       setup_cpu_seconds = 0.; ///< CPU time of the AMG set-up on this process
+    double       seconds = 0.;           ///< wall time of set-up + solve
+    double       cpu_seconds = 0.;       ///< CPU time of set-up + solve on this process
   };
 
   /**

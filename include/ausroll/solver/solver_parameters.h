@@ -33,7 +33,7 @@ namespace ausroll::solver
     LinearSolverType type = LinearSolverType::automatic; ///< `Type`
     /** `Automatic iterative threshold`: Type = automatic solves 3D systems with at least this
         many unknowns iteratively (measured cross-over: doc/benchmarks.md, "3D linear solver"). */
-    double      automatic_iterative_threshold = 1e5;
+    double      automatic_iterative_threshold = 1e4;
     std::string direct_package = "automatic"; ///< `Direct solver package` (automatic | MUMPS | KLU)
     KrylovMethod krylov_method = KrylovMethod::gmres; ///< `Iterative method` (GMRES | CG)
     double       relative_tolerance = 1e-10;       ///< `Relative tolerance` of the iterative solver
