@@ -14,7 +14,8 @@
  *
  * Usage: amg_3d MODE N DEGREE SOLVER [N_SOLVES = 2]
  *   MODE elastic | plastic | finite; SOLVER amg | mumps | klu
- * Runs on any number of MPI ranks (mpirun -np 2 amg_3d ...). Prints per solve: DoFs, AMG set-up
+ * Runs on any number of MPI ranks (mpirun -np 2 amg_3d ...; on 2 ranks the ML set-up fails today,
+ * doc/benchmarks.md). Prints per solve: DoFs, AMG set-up
  * (wall and CPU), iterations, solve time, and per process the peak resident memory (getrusage);
  * no pass/fail (doc/benchmarks.md, section "3D linear solver").
  */

@@ -17,7 +17,8 @@ run() {
 EXE="$BUILD/benchmarks/amg_3d"
 # AMG, Q1, three refinements of N = 8
 for mode in elastic plastic finite; do
-  for n in 8 16 32 64; do run "$EXE" $mode $n 1 amg; done
+  for n in 8 16 32; do run "$EXE" $mode $n 1 amg; done
+  run "$EXE" $mode 64 1 amg 1
 done
 # direct (MUMPS; KLU for comparison) as far as a run stays within a few minutes of CPU
 for n in 8 16 24; do run "$EXE" elastic $n 1 mumps; done
@@ -26,6 +27,6 @@ for n in 8 16; do run "$EXE" elastic $n 1 klu; done
 # Q2
 for n in 4 8 16; do run "$EXE" elastic $n 2 amg; done
 for n in 4 8; do run "$EXE" elastic $n 2 mumps; done
-# two ranks on the largest
+# two ranks on the largest (fails in the ML set-up on this branch: doc/benchmarks.md)
 for mode in elastic plastic; do run mpirun -np 2 "$EXE" $mode 64 1 amg; done
 run mpirun -np 2 "$EXE" elastic 16 1 mumps
