@@ -23,6 +23,8 @@ namespace ausroll::solver
   {
     /** Direct solver package = automatic uses KLU (on one rank) below this many unknowns. */
     constexpr dealii::types::global_dof_index automatic_klu_limit = 10000;
+    /** The same in 3D. */
+    constexpr dealii::types::global_dof_index automatic_klu_limit_3d = 3000;
   } // namespace
 
   template <int dim>
@@ -144,12 +146,12 @@ namespace ausroll::solver
         // automatic: KLU on one rank for small systems (less set-up per solve; solver study in
         // doc/benchmarks.md: KLU 4.3 ms vs MUMPS 6.9 ms per solve at 1728 DoFs, equal near 10^4),
         // MUMPS otherwise (distributed, and 2-4x faster than KLU from 6e4 DoFs).
-        // In 3D MUMPS always: KLU's fill-in grows much faster (3D block, doc/benchmarks.md "3D
-        // linear solver": equal at 2187 DoFs, 8x slower at 14739).
+        // In 3D KLU only on the smallest systems: its fill-in grows much faster (3D block,
+        // doc/benchmarks.md "3D linear solver": equal to MUMPS at 2187 DoFs, 7x slower at 14739).
         const bool mumps
             = parameters.direct_package == "MUMPS"
               || (parameters.direct_package == "automatic"
-                  && (dim == 3 || A.m() >= automatic_klu_limit
+                  && (A.m() >= (dim == 3 ? automatic_klu_limit_3d : automatic_klu_limit)
                       || Utilities::MPI::n_mpi_processes(A.get_mpi_communicator()) > 1));
         (void)control;
         try

@@ -51,7 +51,7 @@ namespace ausroll::solver
                       "automatic",
                       Patterns::Selection("automatic|MUMPS|KLU"),
                       "Amesos package for Type = direct: automatic (KLU on one MPI rank below "
-                      "10^4 unknowns in 2D, MUMPS otherwise and always in 3D), MUMPS (runs in "
+                      "10^4 unknowns in 2D and 3000 in 3D, MUMPS otherwise), MUMPS (runs in "
                       "parallel), KLU (serial).");
     prm.declare_entry("Iterative method",
                       "GMRES",
