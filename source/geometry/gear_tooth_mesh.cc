@@ -6,6 +6,7 @@
 #include <ausroll/geometry/flank_manifold.h>
 #include <ausroll/geometry/gear_tooth_mesh.h>
 
+#include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria_description.h>
 
@@ -352,6 +353,65 @@ namespace ausroll::geometry
       }
     }
     TransfiniteInterpolationManifold<2> transfinite;
+    transfinite.initialize(tria);
+    tria.set_manifold(2, transfinite);
+  }
+
+  void create_extruded_gear_tooth_mesh(const GearToothParameters &p,
+                                       const double               half_width,
+                                       const unsigned int         layers,
+                                       Triangulation<3>          &coarse)
+  {
+    Triangulation<2> section;
+    create_gear_tooth_mesh(p, section);
+    std::vector<double> z(layers + 1);
+    for (unsigned int i = 0; i <= layers; ++i)
+      z[i] = half_width * i / double(layers);
+    // Lines along z through a vertex of the outline take the outline's manifold (they are
+    // straight in every chart used here), interior ones the transfinite id.
+    std::vector<types::manifold_id> priorities;
+    for (unsigned int k = 0; k < p.teeth; ++k)
+      for (unsigned int j = 0; j < 4; ++j)
+        priorities.push_back(10 + 10 * k + j);
+    priorities.push_back(1);
+    priorities.push_back(numbers::flat_manifold_id);
+    priorities.push_back(2);
+    GridGenerator::extrude_triangulation(
+        section, z, coarse, /*copy_manifold_ids=*/true, priorities);
+    const double tol = 1e-8 * half_width;
+    for (const auto &cell : coarse.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+        {
+          const double zc = face->center()[2];
+          if (std::abs(zc) < tol)
+            face->set_boundary_id(4);
+          else if (std::abs(zc - half_width) < tol)
+            face->set_boundary_id(3);
+        }
+  }
+
+  void attach_extruded_gear_tooth_manifolds(const GearToothParameters &p, Triangulation<3> &tria)
+  {
+    const InvoluteGear g = p.gear();
+    const Tensor<1, 3> e_z({0., 0., 1.});
+    tria.set_manifold(1, CylindricalManifold<3>(e_z, Point<3>()));
+    const Point<2> c = g.tooth_geometry().fillet_center;
+    for (unsigned int k = 0; k < p.teeth; ++k)
+    {
+      const double       axis = p.axis_angle(k);
+      const unsigned int base = 10 + 10 * k;
+      tria.set_manifold(base, ExtrudedFlankManifold(g, FlankSide::positive, axis));
+      tria.set_manifold(base + 1, ExtrudedFlankManifold(g, FlankSide::negative, axis));
+      if (g.root_fillet_radius() > 0.)
+        for (const double side : {1., -1.})
+        {
+          const Point<2> f = rotated(Point<2>(c[0], side * c[1]), axis);
+          tria.set_manifold(base + (side > 0. ? 2 : 3),
+                            CylindricalManifold<3>(e_z, Point<3>(f[0], f[1], 0.)));
+        }
+    }
+    TransfiniteInterpolationManifold<3> transfinite;
     transfinite.initialize(tria);
     tria.set_manifold(2, transfinite);
   }

@@ -117,6 +117,101 @@ namespace ausroll::geometry
         throw InputError("Geometry/Mesh file: cannot read '" + p.mesh_file + "'");
       }
     }
+
+    /** `Geometry/Type = block`: colorized box (ids 0..5 on x_min, x_max, y_min, ..., z_max). */
+    void block(const GeometryParameters &p, Triangulation<3> &coarse)
+    {
+      require(p.block_cells.size() == 3, "Geometry/Block/Cells", "needs three numbers");
+      GridGenerator::subdivided_hyper_rectangle(
+          coarse, p.block_cells, p.block_lower, p.block_upper, /*colorize=*/true);
+    }
+
+    /** Coordinates 0, h/n, ..., h of the planes between @p layers layers over @p height. */
+    std::vector<double> slices(const double height, const unsigned int layers)
+    {
+      std::vector<double> z(layers + 1);
+      for (unsigned int i = 0; i <= layers; ++i)
+        z[i] = height * i / double(layers);
+      return z;
+    }
+
+    /**
+     * `Geometry/Type = quarter cylinder`: deal.II's three-cell quarter disk (x, y >= 0) extruded
+     * along z. Manifold ids: 1 on the mantle (faces and their lines), 2 (transfinite) on the two
+     * cells next to it, flat on the central cell. Boundary ids: see boundary_ids_3d.
+     */
+    void quarter_cylinder(const GeometryParameters &p, Triangulation<3> &coarse)
+    {
+      Triangulation<2> section;
+      GridGenerator::quarter_hyper_ball(section, Point<2>(), p.cylinder_radius);
+      const double tol = 1e-8 * p.cylinder_radius;
+      section.set_all_manifold_ids(numbers::flat_manifold_id);
+      const auto on_arc = [&](const auto &face)
+      {
+        for (const unsigned int v : face->vertex_indices())
+          if (std::abs(face->vertex(v).norm() - p.cylinder_radius) > tol)
+            return false;
+        return true;
+      };
+      for (const auto &cell : section.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && on_arc(face))
+            cell->set_all_manifold_ids(2);
+      for (const auto &cell : section.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && on_arc(face))
+            face->set_manifold_id(1);
+      GridGenerator::extrude_triangulation(section,
+                                           slices(p.cylinder_length, p.cylinder_layers),
+                                           coarse,
+                                           /*copy_manifold_ids=*/true,
+                                           {1, numbers::flat_manifold_id, 2});
+      namespace ids = boundary_ids_3d::quarter_cylinder;
+      for (const auto &cell : coarse.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+          {
+            const Point<3> c = face->center();
+            face->set_boundary_id(std::abs(c[2]) < tol                       ? ids::bottom
+                                  : std::abs(c[2] - p.cylinder_length) < tol ? ids::top
+                                  : std::abs(c[0]) < tol                     ? ids::symmetry_x
+                                  : std::abs(c[1]) < tol                     ? ids::symmetry_y
+                                                                             : ids::mantle);
+          }
+    }
+
+    /**
+     * `Geometry/Type = thick ring`: the `Ring` annulus extruded over 0 <= z <= Thickness / 2.
+     * Boundary ids: 0 bore, 1 rim (from 2D), 2 side face, 3 symmetry face z = 0.
+     */
+    void thick_ring(const GeometryParameters &p, Triangulation<3> &coarse)
+    {
+      Triangulation<2> section;
+      ring(p, section);
+      const double half = 0.5 * p.ring_thickness;
+      GridGenerator::extrude_triangulation(section, slices(half, p.ring_layers), coarse);
+      const double tol = 1e-8 * half;
+      namespace ids = boundary_ids_3d::thick_ring;
+      for (const auto &cell : coarse.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+          {
+            const double z = face->center()[2];
+            if (std::abs(z) < tol)
+              face->set_boundary_id(ids::symmetry);
+            else if (std::abs(z - half) < tol)
+              face->set_boundary_id(ids::side);
+          }
+    }
+
+    /** Manifolds of the quarter cylinder: cylindrical on the mantle, transfinite next to it. */
+    void attach_cylinder_manifolds(Triangulation<3> &tria)
+    {
+      tria.set_manifold(1, CylindricalManifold<3>(Tensor<1, 3>({0., 0., 1.}), Point<3>()));
+      TransfiniteInterpolationManifold<3> transfinite;
+      transfinite.initialize(tria);
+      tria.set_manifold(2, transfinite);
+    }
   } // namespace
 
   namespace
@@ -175,7 +270,7 @@ namespace ausroll::geometry
       if (p.refinement_radius <= 0. || p.local_refinements == 0)
         return;
       Point<dim> target;
-      for (unsigned int d = 0; d < std::min(dim, 2); ++d)
+      for (int d = 0; d < std::min(dim, 2); ++d)
         target[d] = p.refinement_point[d];
       double radius = p.refinement_radius;
       for (unsigned int level = 0; level < p.local_refinements;
@@ -215,6 +310,25 @@ namespace ausroll::geometry
             n *= c;
           entries = "Geometry/Rectangle/Cells";
           break;
+        case WorkpieceType::block:
+          n = 1.;
+          for (const unsigned int c : parameters.block_cells)
+            n *= c;
+          entries = "Geometry/Block/Cells";
+          break;
+        case WorkpieceType::quarter_cylinder:
+          n = 3. * parameters.cylinder_layers;
+          entries = "Geometry/Quarter cylinder/Layers";
+          break;
+        case WorkpieceType::thick_ring:
+          n = double(parameters.ring_cells_around) * parameters.ring_cells_radially
+              * parameters.ring_layers;
+          entries = "Geometry/Ring/Cells around x Cells radially x Geometry/Thick ring/Layers";
+          break;
+        case WorkpieceType::extruded_gear_tooth:
+          n = 100. * parameters.gear_tooth.teeth * parameters.gear_layers; // <= 56 per tooth
+          entries = "Geometry/Gear tooth/Teeth x Geometry/Extruded gear tooth/Layers";
+          break;
         default:
           break;
       }
@@ -224,6 +338,7 @@ namespace ausroll::geometry
                          + std::to_string(static_cast<long long>(max_coarse_cells))
                          + "); use fewer coarse cells and Geometry/Global refinements");
     }
+    parameters.require_dimension(dim);
     Triangulation<dim> coarse;
     if (parameters.type == WorkpieceType::mesh_file)
       mesh_file(parameters, coarse);
@@ -241,7 +356,19 @@ namespace ausroll::geometry
         rectangle(parameters, coarse);
     }
     else
-      throw InputError("Geometry/Type: this shape is two-dimensional");
+    {
+      if (parameters.type == WorkpieceType::block)
+        block(parameters, coarse);
+      else if (parameters.type == WorkpieceType::quarter_cylinder)
+        quarter_cylinder(parameters, coarse);
+      else if (parameters.type == WorkpieceType::thick_ring)
+        thick_ring(parameters, coarse);
+      else
+        create_extruded_gear_tooth_mesh(parameters.gear_tooth,
+                                        0.5 * parameters.gear_face_width,
+                                        parameters.gear_layers,
+                                        coarse);
+    }
 
     triangulation.copy_triangulation(coarse);
     if constexpr (dim == 2)
@@ -262,8 +389,22 @@ namespace ausroll::geometry
         triangulation.set_manifold(1, PolarManifold<2>(parameters.ring_center));
       }
     }
-    const double estimate
-        = double(triangulation.n_cells()) * std::pow(4., parameters.global_refinements);
+    else
+    {
+      if (parameters.type == WorkpieceType::quarter_cylinder)
+        attach_cylinder_manifolds(triangulation);
+      if (parameters.type == WorkpieceType::thick_ring)
+      {
+        // cylindrical manifold about the ring axis on every cell: bore and rim stay circles
+        triangulation.set_all_manifold_ids(1);
+        const Point<3> c(parameters.ring_center[0], parameters.ring_center[1], 0.);
+        triangulation.set_manifold(1, CylindricalManifold<3>(Tensor<1, 3>({0., 0., 1.}), c));
+      }
+      if (parameters.type == WorkpieceType::extruded_gear_tooth)
+        attach_extruded_gear_tooth_manifolds(parameters.gear_tooth, triangulation);
+    }
+    const double estimate = double(triangulation.n_cells())
+                            * std::pow(double(1u << dim), parameters.global_refinements);
     if (estimate > max_cells)
     {
       std::ostringstream msg;

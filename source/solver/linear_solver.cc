@@ -23,6 +23,8 @@ namespace ausroll::solver
   {
     /** Direct solver package = automatic uses KLU (on one rank) below this many unknowns. */
     constexpr dealii::types::global_dof_index automatic_klu_limit = 10000;
+    /** The same in 3D. */
+    constexpr dealii::types::global_dof_index automatic_klu_limit_3d = 3000;
   } // namespace
 
   template <int dim>
@@ -119,6 +121,16 @@ namespace ausroll::solver
   }
 
   template <int dim>
+  LinearSolverType LinearSolver<dim>::resolved_type(const types::global_dof_index n_dofs) const
+  {
+    if (parameters.type != LinearSolverType::automatic)
+      return parameters.type;
+    return dim == 3 && double(n_dofs) >= parameters.automatic_iterative_threshold
+               ? LinearSolverType::iterative
+               : LinearSolverType::direct;
+  }
+
+  template <int dim>
   LinearSolveInfo LinearSolver<dim>::solve(const TrilinosWrappers::SparseMatrix &A,
                                            TrilinosWrappers::MPI::Vector        &x,
                                            const TrilinosWrappers::MPI::Vector  &b) const
@@ -127,16 +139,19 @@ namespace ausroll::solver
     LinearSolveInfo info;
     try
     {
-      if (parameters.type == LinearSolverType::direct)
+      info.iterative = resolved_type(A.m()) == LinearSolverType::iterative;
+      if (!info.iterative)
       {
         SolverControl control(1, 0.);
         // automatic: KLU on one rank for small systems (less set-up per solve; solver study in
         // doc/benchmarks.md: KLU 4.3 ms vs MUMPS 6.9 ms per solve at 1728 DoFs, equal near 10^4),
         // MUMPS otherwise (distributed, and 2-4x faster than KLU from 6e4 DoFs).
+        // In 3D KLU only on the smallest systems: its fill-in grows much faster (3D block,
+        // doc/benchmarks.md "3D linear solver": equal to MUMPS at 2187 DoFs, 7x slower at 14739).
         const bool mumps
             = parameters.direct_package == "MUMPS"
               || (parameters.direct_package == "automatic"
-                  && (A.m() >= automatic_klu_limit
+                  && (A.m() >= (dim == 3 ? automatic_klu_limit_3d : automatic_klu_limit)
                       || Utilities::MPI::n_mpi_processes(A.get_mpi_communicator()) > 1));
         (void)control;
         try
@@ -175,12 +190,19 @@ namespace ausroll::solver
           for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
             for (unsigned int i = 0; i < n_local; ++i)
               (*modes)[m][i] = rigid_body_modes[m][i];
+          // aggregate nodes (the dim displacement DoFs of a support point are consecutive in
+          // deal.II's FESystem numbering and owned by one rank), as ML expects for elasticity
+          // (3D block, doc/benchmarks.md: 14 instead of 17 CG iterations and 1.0 instead of
+          // 1.8 s CPU per solve at 1.1e5 DoFs)
+          list.set("PDE equations", int(dim));
           list.set("null space: type", "pre-computed");
           list.set("null space: dimension", modes->NumVectors());
           list.set("null space: vectors", modes->Values());
         }
         TrilinosWrappers::PreconditionAMG amg;
         amg.initialize(A, list);
+        info.setup_seconds = timer.wall_time();
+        info.setup_cpu_seconds = timer.cpu_time();
 
         SolverControl control(parameters.max_iterations,
                               parameters.relative_tolerance * b.l2_norm());
@@ -192,12 +214,25 @@ namespace ausroll::solver
         }
         else
         {
+          // right preconditioning: GMRES then measures the true residual |b - A x|, which the
+          // tolerance refers to (left preconditioning stops on the preconditioned residual,
+          // measured up to 1e3 times smaller than the true one for the 3D F-bar tangent)
           SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
               control,
-              SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(parameters.restart));
+              SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+                  parameters.restart, /*right_preconditioning=*/true));
           gmres.solve(A, x, b, amg);
         }
         info.iterations = control.last_step();
+        // the true residual: a Krylov method stops on its own (recursive) residual estimate
+        TrilinosWrappers::MPI::Vector r(b);
+        A.vmult(r, x);
+        r.sadd(-1., 1., b);
+        AssertThrow(
+            r.l2_norm() <= 100. * parameters.relative_tolerance * b.l2_norm() || r.l2_norm() == 0.,
+            ExcMessage("the iterative solve stopped at a true relative residual "
+                       + std::to_string(r.l2_norm() / b.l2_norm()) + " (tolerance "
+                       + std::to_string(parameters.relative_tolerance) + "): try Type = direct"));
       }
     }
     catch (const std::exception &e)

@@ -35,15 +35,24 @@ namespace ausroll::solver
     prm.enter_subsection("Linear solver");
     prm.declare_entry(
         "Type",
-        "direct",
-        Patterns::Selection("direct|iterative"),
+        "automatic",
+        Patterns::Selection("automatic|direct|iterative"),
         "direct: sparse LU (Trilinos Amesos; the fastest for 2D up to 10^6 DoFs, see "
-        "doc/benchmarks.md); iterative: Krylov method (Iterative method) + algebraic multigrid.");
+        "doc/benchmarks.md); iterative: Krylov method (Iterative method) + algebraic multigrid "
+        "with the rigid-body modes; automatic: direct for every 2D system and for 3D systems "
+        "with fewer unknowns than Automatic iterative threshold, iterative for larger 3D ones.");
+    prm.declare_entry("Automatic iterative threshold",
+                      "1e4",
+                      Patterns::Double(0.),
+                      "Type = automatic: 3D systems with at least this many unknowns are solved "
+                      "iteratively (the measured cross-over of direct and AMG solves, "
+                      "doc/benchmarks.md section 3D linear solver).");
     prm.declare_entry("Direct solver package",
                       "automatic",
                       Patterns::Selection("automatic|MUMPS|KLU"),
                       "Amesos package for Type = direct: automatic (KLU on one MPI rank below "
-                      "10^4 unknowns, MUMPS otherwise), MUMPS (runs in parallel), KLU (serial).");
+                      "10^4 unknowns in 2D and 3000 in 3D, MUMPS otherwise), MUMPS (runs in "
+                      "parallel), KLU (serial).");
     prm.declare_entry("Iterative method",
                       "GMRES",
                       Patterns::Selection("GMRES|CG"),
@@ -82,8 +91,11 @@ namespace ausroll::solver
     divergence_factor = prm.get_double("Divergence factor");
     line_search = prm.get_bool("Line search");
     prm.enter_subsection("Linear solver");
-    linear.type
-        = prm.get("Type") == "direct" ? LinearSolverType::direct : LinearSolverType::iterative;
+    const std::string type = prm.get("Type");
+    linear.type = type == "direct"      ? LinearSolverType::direct
+                  : type == "iterative" ? LinearSolverType::iterative
+                                        : LinearSolverType::automatic;
+    linear.automatic_iterative_threshold = prm.get_double("Automatic iterative threshold");
     linear.direct_package = prm.get("Direct solver package");
     linear.krylov_method
         = prm.get("Iterative method") == "CG" ? KrylovMethod::cg : KrylovMethod::gmres;

@@ -56,4 +56,41 @@ namespace ausroll::geometry
     /** Polar angle of the tooth axis (rad). */
     double axis_angle;
   };
+
+  /**
+   * The flank surface of FlankManifold extruded along z (the tooth of `Geometry/Type = extruded
+   * gear tooth`): chart coordinates (r, z), a point maps to (|(x, y)|, z) and (r, z) back to the
+   * 2D flank point at radius r with the same z. Refined points on the lateral flank faces are on
+   * the exact involute in every plane z = const, and linear in z.
+   */
+  class ExtrudedFlankManifold : public dealii::ChartManifold<3, 3, 2>
+  {
+  public:
+    /** Flank @p side of @p gear, tooth axis at polar angle @p axis_angle (rad) in the x-y plane. */
+    ExtrudedFlankManifold(const InvoluteGear &gear, FlankSide side, double axis_angle);
+
+    /** A copy of this manifold. */
+    std::unique_ptr<dealii::Manifold<3, 3>> clone() const override;
+
+    /** Chart coordinates (r, z) of @p space_point, r its distance from the z axis. */
+    dealii::Point<2> pull_back(const dealii::Point<3> &space_point) const override;
+
+    /** Flank point at radius @p chart_point[0] and height @p chart_point[1]. */
+    dealii::Point<3> push_forward(const dealii::Point<2> &chart_point) const override;
+
+    /** Derivative: the 2D flank derivative in x-y for r, e_z for z. */
+    dealii::DerivativeForm<1, 2, 3>
+    push_forward_gradient(const dealii::Point<2> &chart_point) const override;
+
+    /** FlankManifold::angular_distance() of the projection of @p p on the x-y plane. */
+    double angular_distance(const dealii::Point<3> &p) const;
+
+  private:
+    /** The 2D flank. */
+    FlankManifold flank;
+    /** Gear, side and axis: kept for clone(). */
+    InvoluteGear gear;
+    FlankSide    side;
+    double       axis_angle;
+  };
 } // namespace ausroll::geometry

@@ -88,4 +88,26 @@ namespace ausroll::geometry
    */
   void attach_gear_tooth_manifolds(const GearToothParameters &parameters,
                                    dealii::Triangulation<2>  &tria);
+
+  /**
+   * `Geometry/Type = extruded gear tooth`: the coarse tooth sector of create_gear_tooth_mesh()
+   * extruded along z over 0 <= z <= @p half_width in @p layers layers of cells, into the empty
+   * @p coarse. Boundary ids: the 2D ids on the lateral faces (0 outline, 1 inner arc, 2 side
+   * cuts), 3 face end z = @p half_width, 4 symmetry face z = 0. Manifold ids as in 2D on the
+   * cells (2 transfinite), on the lateral faces and on the lines in the planes z = const (the 2D
+   * line ids); lines along z take the first of: a flank or fillet id, 1, flat, 2.
+   */
+  void create_extruded_gear_tooth_mesh(const GearToothParameters &parameters,
+                                       double                     half_width,
+                                       unsigned int               layers,
+                                       dealii::Triangulation<3>  &coarse);
+
+  /**
+   * The 3D manifolds of the extruded tooth on @p tria (a copy of the coarse mesh made by
+   * create_extruded_gear_tooth_mesh()): 1 CylindricalManifold about the z axis, flanks
+   * ExtrudedFlankManifold, fillets CylindricalManifold about the fillet centre line, 2
+   * transfinite interpolation (call on the final triangulation).
+   */
+  void attach_extruded_gear_tooth_manifolds(const GearToothParameters &parameters,
+                                            dealii::Triangulation<3>  &tria);
 } // namespace ausroll::geometry

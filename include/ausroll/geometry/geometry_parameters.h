@@ -22,8 +22,41 @@ namespace ausroll::geometry
     quarter_disk, ///< lower-right quarter of a disk (cylinder on a flat: Hertz); `Quarter disk`
     mesh_file,    ///< a mesh read from `Mesh file` (Gmsh .msh or UCD .inp)
     gear_tooth,   ///< involute gear tooth sector with rim; subsection `Gear tooth`
-    ring          ///< full annulus (disk with a bore: disk rolling); subsection `Ring`
+    ring,         ///< full annulus (disk with a bore: disk rolling); subsection `Ring`
+    // three-dimensional workpieces (dim = 3 only)
+    block,            ///< axis-parallel box; subsection `Block`
+    quarter_cylinder, ///< quarter of a cylinder about the z axis; subsection `Quarter cylinder`
+    thick_ring, ///< upper half (z >= 0) of a ring of a thickness: the `Ring` annulus extruded;
+                ///< subsection `Thick ring`
+    extruded_gear_tooth ///< upper half (z >= 0) of the face width: the `Gear tooth` sector
+                        ///< extruded; subsection `Extruded gear tooth`
   };
+
+  /** Boundary ids of the three-dimensional workpieces (documented in `Geometry/Type`). */
+  namespace boundary_ids_3d
+  {
+    /** Block: faces x = x_min, x_max, y = y_min, y_max, z = z_min, z_max. */
+    namespace block
+    {
+      constexpr unsigned int x_min = 0, x_max = 1, y_min = 2, y_max = 3, z_min = 4, z_max = 5;
+    } // namespace block
+    /** Quarter cylinder: symmetry planes x = 0 and y = 0, mantle, ends z = 0 and z = Length. */
+    namespace quarter_cylinder
+    {
+      constexpr unsigned int symmetry_x = 0, symmetry_y = 1, mantle = 2, bottom = 3, top = 4;
+    } // namespace quarter_cylinder
+    /** Thick ring: bore, rim, side face z = Thickness / 2, symmetry face z = 0. */
+    namespace thick_ring
+    {
+      constexpr unsigned int bore = 0, rim = 1, side = 2, symmetry = 3;
+    } // namespace thick_ring
+    /** Extruded gear tooth: the 2D ids 0 outline, 1 inner arc, 2 side cuts on the lateral faces;
+        3 face end z = Face width / 2, 4 symmetry face z = 0. */
+    namespace extruded_gear_tooth
+    {
+      constexpr unsigned int outline = 0, inner_arc = 1, side_cuts = 2, face_end = 3, symmetry = 4;
+    } // namespace extruded_gear_tooth
+  }   // namespace boundary_ids_3d
 
   /**
    * Parameters of subsection `Geometry` and its shape subsections.
@@ -58,11 +91,41 @@ namespace ausroll::geometry
     unsigned int     ring_cells_around = 24;  ///< `Cells around` the circumference (coarse mesh)
     unsigned int     ring_cells_radially = 4; ///< `Cells radially` across the wall (coarse mesh)
 
+    // subsection `Block` (dim = 3)
+    dealii::Point<3>          block_lower{0., 0., 0.}; ///< `Lower corner`
+    dealii::Point<3>          block_upper{1., 1., 1.}; ///< `Upper corner`
+    std::vector<unsigned int> block_cells{1, 1, 1};    ///< `Cells` in x, y, z (coarse mesh)
+
+    // subsection `Quarter cylinder` (dim = 3; x >= 0, y >= 0, 0 <= z <= Length)
+    double       cylinder_radius = 1.; ///< `Radius`
+    double       cylinder_length = 1.; ///< `Length` along the z axis
+    unsigned int cylinder_layers = 2;  ///< `Layers` of coarse cells along the axis
+
+    // subsection `Thick ring` (dim = 3; cross-section from subsection `Ring`)
+    double       ring_thickness = 1.; ///< `Thickness` (whole ring; the mesh is its half z >= 0)
+    unsigned int ring_layers = 2;     ///< `Layers` of coarse cells through the half thickness
+
+    // subsection `Extruded gear tooth` (dim = 3; cross-section from subsection `Gear tooth`)
+    double       gear_face_width = 10.; ///< `Face width` (whole; the mesh is its half z >= 0)
+    unsigned int gear_layers = 2;       ///< `Layers` of coarse cells through the half face width
+
     // local refinement towards a point (any shape)
     dealii::Point<2> refinement_point{0., 0.}; ///< `Refinement point`
     double           refinement_radius = 0.;   ///< `Refinement radius` (0: no local refinement)
     unsigned int     local_refinements = 0;    ///< `Local refinements` (levels)
     double           refinement_radius_factor = 0.5; ///< `Refinement radius factor` per level
+
+    /**
+     * Space dimension the `Type` builds: 2 for the planar shapes, 3 for block, quarter cylinder,
+     * thick ring and extruded gear tooth, 0 for a mesh file (either).
+     */
+    unsigned int dimension() const;
+
+    /**
+     * InputError naming `Geometry/Type` unless the shape can be built in @p dim dimensions (a 3D
+     * shape in a 2D run or a 2D shape in a 3D run).
+     */
+    void require_dimension(unsigned int dim) const;
 
     /** Declare subsection `Geometry`. */
     static void declare_parameters(dealii::ParameterHandler &prm);

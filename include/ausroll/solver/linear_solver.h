@@ -24,9 +24,12 @@ namespace ausroll::solver
   /** What one linear solve did. */
   struct LinearSolveInfo
   {
-    unsigned int iterations = 0;   ///< Krylov iterations (0 for the direct solver)
-    double       seconds = 0.;     ///< wall time of set-up + solve
-    double       cpu_seconds = 0.; ///< CPU time of set-up + solve on this process
+    unsigned int iterations = 0;     ///< Krylov iterations (0 for the direct solver)
+    bool         iterative = false;  ///< the iterative solver was used (Type or automatic choice)
+    double       setup_seconds = 0.; ///< wall time of the AMG set-up (0 for the direct solver)
+    double       setup_cpu_seconds = 0.; ///< CPU time of the AMG set-up on this process
+    double       seconds = 0.;           ///< wall time of set-up + solve
+    double       cpu_seconds = 0.;       ///< CPU time of set-up + solve on this process
   };
 
   /**
@@ -59,6 +62,12 @@ namespace ausroll::solver
      * and only the numeric one is redone for new matrix values.
      */
     void matrix_pattern_changed();
+
+    /**
+     * The solver family used for a system of @p n_dofs unknowns: `Type`, or for Type = automatic
+     * direct in 2D and below `Automatic iterative threshold` unknowns in 3D, iterative from there.
+     */
+    LinearSolverType resolved_type(dealii::types::global_dof_index n_dofs) const;
 
     /** Solve A x = b. Throws RunFailure if the solver fails. */
     LinearSolveInfo solve(const dealii::TrilinosWrappers::SparseMatrix &A,

@@ -13,7 +13,9 @@ namespace ausroll::solver
   /** Linear solver family (`Solver/Linear solver/Type`). */
   enum class LinearSolverType
   {
-    direct,   ///< sparse direct factorisation (Trilinos Amesos: MUMPS or KLU)
+    automatic, ///< direct in 2D and for 3D systems below `Automatic iterative threshold`
+               ///< unknowns, iterative from there on (LinearSolver::resolved_type())
+    direct,    ///< sparse direct factorisation (Trilinos Amesos: MUMPS or KLU)
     iterative ///< Krylov method preconditioned by algebraic multigrid (Trilinos ML) with rigid-body
               ///< modes
   };
@@ -28,7 +30,10 @@ namespace ausroll::solver
   /** Parameters of subsection `Solver/Linear solver`. */
   struct LinearSolverParameters
   {
-    LinearSolverType type = LinearSolverType::direct; ///< `Type`
+    LinearSolverType type = LinearSolverType::automatic; ///< `Type`
+    /** `Automatic iterative threshold`: Type = automatic solves 3D systems with at least this
+        many unknowns iteratively (measured cross-over: doc/benchmarks.md, "3D linear solver"). */
+    double      automatic_iterative_threshold = 1e4;
     std::string direct_package = "automatic"; ///< `Direct solver package` (automatic | MUMPS | KLU)
     KrylovMethod krylov_method = KrylovMethod::gmres; ///< `Iterative method` (GMRES | CG)
     double       relative_tolerance = 1e-10;       ///< `Relative tolerance` of the iterative solver
