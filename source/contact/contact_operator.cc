@@ -526,7 +526,8 @@ namespace ausroll::contact
     double         s_min = infinity, s_max = -infinity;
     double         x_min = infinity, x_max = -infinity; // die-frame x of closed nodes
     for (const Node &n : nodes)
-      if (n.owned && n.current.status != ContactStatus::open && n.current.die == static_cast<int>(k))
+      if (n.owned && n.current.status != ContactStatus::open
+          && n.current.die == static_cast<int>(k))
       {
         force += contact_force(n);
         ++(n.current.status == ContactStatus::stick ? n_stick : n_slip);
