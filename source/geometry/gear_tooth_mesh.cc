@@ -233,9 +233,7 @@ namespace ausroll::geometry
     try
     {
       const double alpha = pressure_angle * M_PI / 180.;
-      return diametral_pitch > 0.
-                 ? InvoluteGear::from_diametral_pitch(n_teeth, diametral_pitch, alpha, p)
-                 : InvoluteGear(n_teeth, module, alpha, p);
+      return InvoluteGear::from_pitch_or_module(n_teeth, diametral_pitch, module, alpha, p);
     }
     catch (const EntryError &e)
     {

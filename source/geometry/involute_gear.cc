@@ -131,6 +131,17 @@ namespace ausroll::geometry
     return InvoluteGear(n_teeth, mm_per_inch / diametral_pitch, pressure_angle, proportions);
   }
 
+  InvoluteGear InvoluteGear::from_pitch_or_module(const unsigned int      n_teeth,
+                                                  const double            diametral_pitch,
+                                                  const double            module,
+                                                  const double            pressure_angle,
+                                                  const ToothProportions &proportions)
+  {
+    return diametral_pitch > 0.
+               ? from_diametral_pitch(n_teeth, diametral_pitch, pressure_angle, proportions)
+               : InvoluteGear(n_teeth, module, pressure_angle, proportions);
+  }
+
   double InvoluteGear::involute(const double angle)
   {
     return std::tan(angle) - angle;

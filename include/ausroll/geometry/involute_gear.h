@@ -134,6 +134,18 @@ namespace ausroll::geometry
                                              const ToothProportions &proportions
                                              = ToothProportions());
 
+    /**
+     * Gear from the entries of a `.prm` gear subsection: from_diametral_pitch() if
+     * @p diametral_pitch > 0 (`Diametral pitch`), otherwise the metric constructor with @p module
+     * (`Module`); @p pressure_angle in radians.
+     */
+    static InvoluteGear from_pitch_or_module(unsigned int            n_teeth,
+                                             double                  diametral_pitch,
+                                             double                  module,
+                                             double                  pressure_angle,
+                                             const ToothProportions &proportions
+                                             = ToothProportions());
+
     /** The involute function inv(a) = tan(a) - a. */
     static double involute(double angle);
 

@@ -246,11 +246,8 @@ namespace ausroll::contact::surfaces
         proportions.root_fillet_radius = root_fillet_radius;
         try
         {
-          const geometry::InvoluteGear gear
-              = diametral_pitch > 0.
-                    ? geometry::InvoluteGear::from_diametral_pitch(
-                        teeth, diametral_pitch, pressure_angle * degree, proportions)
-                    : geometry::InvoluteGear(teeth, module, pressure_angle * degree, proportions);
+          const auto gear = geometry::InvoluteGear::from_pitch_or_module(
+              teeth, diametral_pitch, module, pressure_angle * degree, proportions);
           return DieSurface::involute_gear(
               gear, tooth_axis_angle * degree, sector_teeth, tip_radius);
         }
