@@ -4,6 +4,7 @@
  */
 #include <ausroll/core/exceptions.h>
 #include <ausroll/geometry/flank_manifold.h>
+#include <ausroll/geometry/gear_entries.h>
 #include <ausroll/geometry/gear_tooth_mesh.h>
 
 #include <deal.II/grid/grid_generator.h>
@@ -157,18 +158,7 @@ namespace ausroll::geometry
   void GearToothParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Gear tooth");
-    prm.declare_entry("Number of teeth", "31", Patterns::Integer(3), "Teeth z of the whole gear.");
-    prm.declare_entry("Diametral pitch",
-                      "8.5",
-                      Patterns::Double(0.),
-                      "Teeth per inch of pitch diameter (0: use Module).");
-    prm.declare_entry(
-        "Module", "0", Patterns::Double(0.), "Module m (mm), used when Diametral pitch = 0.");
-    prm.declare_entry(
-        "Pressure angle", "22", Patterns::Double(0., 45.), "Pressure angle (degrees).");
-    prm.declare_entry("Addendum", "-1", Patterns::Double(), "Addendum (mm); negative: 1 module.");
-    prm.declare_entry(
-        "Dedendum", "-1", Patterns::Double(), "Dedendum (mm); negative: 1.25 module.");
+    declare_gear_size_entries(prm, "31", "Teeth z of the whole gear.");
     prm.declare_entry("Tooth thickness",
                       "-1",
                       Patterns::Double(),

@@ -1,6 +1,7 @@
 #include <ausroll/contact/die_surface.h>
 #include <ausroll/contact/surfaces/involute_gear.h>
 #include <ausroll/core/exceptions.h>
+#include <ausroll/geometry/gear_entries.h>
 #include <ausroll/geometry/involute_gear.h>
 
 #include <deal.II/base/numbers.h>
@@ -11,18 +12,7 @@ namespace ausroll::contact::surfaces
 
   void InvoluteGearParameters::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Number of teeth", "57", Patterns::Integer(3), "Teeth z.");
-    prm.declare_entry("Diametral pitch",
-                      "8.5",
-                      Patterns::Double(0.),
-                      "Teeth per inch of pitch diameter (0: use Module).");
-    prm.declare_entry(
-        "Module", "0", Patterns::Double(0.), "Module m (mm), used when Diametral pitch = 0.");
-    prm.declare_entry(
-        "Pressure angle", "22", Patterns::Double(0., 45.), "Pressure angle (degrees).");
-    prm.declare_entry("Addendum", "-1", Patterns::Double(), "Addendum (mm); negative: 1 module.");
-    prm.declare_entry(
-        "Dedendum", "-1", Patterns::Double(), "Dedendum (mm); negative: 1.25 module.");
+    geometry::declare_gear_size_entries(prm, "57", "Teeth z.");
     prm.declare_entry(
         "Tooth thickness",
         "-1",

@@ -1,0 +1,24 @@
+/**
+ * @file gear_entries.h
+ * The `.prm` entries that size an involute gear (teeth, diametral pitch or module, pressure angle,
+ * addendum, dedendum), declared once for every subsection that describes a gear (the gear die
+ * `Contact/Die N/Involute gear` and the workpiece `Geometry/Gear tooth`).
+ */
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace ausroll::geometry
+{
+  /**
+   * Declare `Number of teeth` (default @p default_teeth, documented as @p teeth_documentation),
+   * `Diametral pitch`, `Module`, `Pressure angle`, `Addendum` and `Dedendum` in the current
+   * subsection of @p prm. Read them back with InvoluteGear::from_pitch_or_module() and
+   * ToothProportions (negative addendum / dedendum: the module-based default).
+   */
+  void declare_gear_size_entries(dealii::ParameterHandler &prm,
+                                 const std::string        &default_teeth,
+                                 const std::string        &teeth_documentation);
+} // namespace ausroll::geometry

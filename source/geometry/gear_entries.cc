@@ -1,0 +1,24 @@
+#include <ausroll/geometry/gear_entries.h>
+
+namespace ausroll::geometry
+{
+  using namespace dealii;
+
+  void declare_gear_size_entries(ParameterHandler  &prm,
+                                 const std::string &default_teeth,
+                                 const std::string &teeth_documentation)
+  {
+    prm.declare_entry("Number of teeth", default_teeth, Patterns::Integer(3), teeth_documentation);
+    prm.declare_entry("Diametral pitch",
+                      "8.5",
+                      Patterns::Double(0.),
+                      "Teeth per inch of pitch diameter (0: use Module).");
+    prm.declare_entry(
+        "Module", "0", Patterns::Double(0.), "Module m (mm), used when Diametral pitch = 0.");
+    prm.declare_entry(
+        "Pressure angle", "22", Patterns::Double(0., 45.), "Pressure angle (degrees).");
+    prm.declare_entry("Addendum", "-1", Patterns::Double(), "Addendum (mm); negative: 1 module.");
+    prm.declare_entry(
+        "Dedendum", "-1", Patterns::Double(), "Dedendum (mm); negative: 1.25 module.");
+  }
+} // namespace ausroll::geometry
