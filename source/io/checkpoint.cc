@@ -3,6 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -28,6 +29,16 @@ namespace ausroll::io
                       "Testing aid: terminate the process abruptly (as if killed) after this step "
                       "(0: never).");
     prm.leave_subsection();
+  }
+
+  void abort_if_asked(const CheckpointParameters &parameters,
+                      const unsigned int          step,
+                      ConditionalOStream         &log)
+  {
+    if (parameters.abort_after_step != step)
+      return;
+    log << "  aborting after step " << step << " (Checkpoint/Abort after step)" << std::endl;
+    std::_Exit(99);
   }
 
   void CheckpointParameters::parse_parameters(ParameterHandler &prm)

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <map>
@@ -24,6 +25,14 @@ namespace ausroll::io
     /** Read subsection `Checkpoint`. */
     void parse_parameters(dealii::ParameterHandler &prm);
   };
+
+  /**
+   * The testing aid `Checkpoint/Abort after step`: if @p step is that step, say so on @p log and
+   * end the process at once (exit status 99, as if killed: nothing is closed or flushed).
+   */
+  void abort_if_asked(const CheckpointParameters &parameters,
+                      const unsigned int          step,
+                      dealii::ConditionalOStream &log);
 
   /**
    * Scalars and vectors of a checkpoint (time, step, contact statuses, output records, ...)

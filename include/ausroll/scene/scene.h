@@ -1,31 +1,30 @@
 /**
  * @file scene.h
- * A simulation scene: owns mesh, finite element, material points, loads, solvers and output, and
- * runs the load-step loop.
+ * A simulation scene: builds the parts of a run from the parameters (MechanicalSystem, Assembler,
+ * ConstitutiveModel, ContactOperator with its ContactStrategy, LoadStepper, NewtonSolver,
+ * postprocessors) and orchestrates them.
  */
 #pragma once
 
 #include <ausroll/adaptivity/material_point_transfer.h>
 #include <ausroll/contact/contact_operator.h>
+#include <ausroll/contact/contact_strategy.h>
 #include <ausroll/io/history.h>
 #include <ausroll/io/postprocess/interface.h>
 #include <ausroll/material/constitutive_model.h>
 #include <ausroll/mechanics/assembler.h>
 #include <ausroll/mechanics/boundary_conditions.h>
+#include <ausroll/mechanics/distortion_check.h>
+#include <ausroll/mechanics/mechanical_system.h>
 #include <ausroll/mechanics/planar_kinematics.h>
 #include <ausroll/scene/scene_parameters.h>
+#include <ausroll/solver/equilibrium_problem.h>
 #include <ausroll/solver/linear_solver.h>
+#include <ausroll/solver/load_stepper.h>
 #include <ausroll/solver/newton_solver.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/distributed/tria.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
 #include <string>
@@ -34,13 +33,14 @@
 namespace ausroll::scene
 {
   /**
-   * One run of ausroll. The constructor builds everything from the parameters; run() performs the
-   * load steps: for each step the Newton solver iterates on this object (it implements
-   * solver::NonlinearProblem), failing steps are cut back, converged steps are committed, written
-   * to history.csv and (every `Output/Interval` steps) to VTU.
+   * One run of ausroll. The constructor builds everything from the parameters; run() hands the
+   * load steps to the LoadStepper, which drives this object through solver::SteppedProblem
+   * (solve, restart, accept a step); the Newton solver iterates on its solver::EquilibriumProblem
+   * (assemble, solve for the increment). Converged steps are committed,
+   * written to history.csv and (every `Output/Interval` steps) to VTU.
    */
   template <int dim>
-  class Scene : public solver::NonlinearProblem
+  class Scene : public solver::SteppedProblem
   {
   public:
     /** Build the scene described by @p parameters on communicator @p comm. */
@@ -52,45 +52,38 @@ namespace ausroll::scene
      */
     void run();
 
-    /** @name solver::NonlinearProblem */
+    /** @name solver::SteppedProblem */
     //@{
-    bool   assemble(const bool with_matrix, std::string &message) override;
-    double residual_norm() const override;
-    /** The contact strategy's update of the statuses at a converged state (nested active set). */
-    unsigned int update_constraints_at_convergence(dealii::ConditionalOStream &log) override;
-    /** As the contact strategy says (nested active set: curved dies leave second-order gaps). */
-    bool                    backtrack_with_small_constraint_gaps() const override;
-    double                  reference_force() const override;
-    double                  constraint_violation() const override;
-    solver::LinearSolveInfo solve_for_increment() override;
-    void                    apply_increment(const double step_length) override;
-    double                  length_scale() const override;
-    double                  increment_residual_product() const override;
+    void begin_step(const double t_start) override
+    {
+      time = t_start;
+      contact_strategy->begin_step(system.solution_ghosted, t_start);
+    }
+    solver::NewtonResult solve(const double t, const double predictor_ratio) override
+    {
+      time = t;
+      system.start_step(predictor_ratio);
+      return newton.solve(*equilibrium, newton_log);
+    }
+    void                  restart_step() override { contact_strategy->restart_step(); }
+    contact::StepDecision end_of_step(const double dt) override
+    {
+      return contact_strategy->end_of_step(dt, parameters.loading.end_time, newton_log);
+    }
+    std::string  keep_last_converged(const double t_start) override;
+    unsigned int accept_step(const solver::LoadStep &step) override;
     //@}
 
   private:
-    /** Distribute DoFs, build constraints, sparsity, vectors and material points. */
-    void setup_system();
-    /** Hanging-node + Dirichlet increment constraints at the current iterate. */
-    void build_newton_constraints();
-    /** Accept the converged step: commit material points, remember the solution. */
+    /** After every MechanicalSystem::setup_system(): what depends on the DoFs above
+        mechanics/ (the linear solver's rigid-body modes, the contact nodes). */
+    void setup_dof_dependents();
+    /** Accept the converged state: commit material points, solution and contact statuses. */
     void commit_step();
     /** The read-only view of the current state for the postprocessors (Newton statistics of
         @p result and @p cutbacks, if given). */
     io::PostprocessInput<dim> postprocess_input(const solver::NewtonResult *result = nullptr,
                                                 const unsigned int          cutbacks = 0) const;
-    /** Quantities of the converged state for history.csv (the postprocessors' columns). */
-    io::HistoryRow history_row(const solver::NewtonResult &result,
-                               const unsigned int          cutbacks) const;
-    /**
-     * Solve the load step from the committed state to time t_start + dt: Newton with cutbacks and,
-     * with the load-increment-ratio contact strategy, sub-steps that end at contact status changes.
-     * Returns the time reached (dt may shrink); throws RunFailure after too many cutbacks.
-     */
-    double solve_step(const double          t_start,
-                      double                dt,
-                      solver::NewtonResult &result,
-                      unsigned int         &cutbacks);
     /** After a converged step: warn (or stop, `Loading/Stop at distorted mesh`) the first time
         the volume change at a quadrature point crosses `Loading/Volume change limit`. */
     void check_distortion();
@@ -102,9 +95,6 @@ namespace ausroll::scene
      * re-equilibrate. Returns false if no cell was flagged.
      */
     bool adapt_mesh(const double next_time);
-    /** After a mesh transfer: make the material points consistent with the interpolated
-        displacement while keeping their stresses (ConstitutiveModel::rebase). */
-    void rebase_material_points();
     /** Write a checkpoint of the converged state (`Checkpoint/Interval`); @p dt: next step size. */
     void write_checkpoint(const double dt);
     /** Restore time, statuses, output records and history from the checkpoint being resumed;
@@ -113,9 +103,6 @@ namespace ausroll::scene
     /** Build the postprocessors (first call) and initialize them on the current mesh (monitor
         points, reaction DoFs, probes). */
     void setup_postprocessing();
-    /** Checks of a new run before anything is written: every boundary-id entry against the mesh,
-        an axisymmetric body off the axis, loads finite and dies plausible at sampled times. */
-    void check_setup();
 
     SceneParameters parameters; ///< the input
     MPI_Comm        comm;       ///< communicator
@@ -129,30 +116,8 @@ namespace ausroll::scene
     std::unique_ptr<dealii::TimerOutput>
         timer; ///< wall-time summary (reset early after a setup error)
 
-    dealii::parallel::distributed::Triangulation<dim> triangulation;
-    dealii::FESystem<dim>                             fe;
-    dealii::MappingQ<dim>                             mapping;
-    dealii::DoFHandler<dim>                           dof_handler;
-    dealii::IndexSet                                  owned_dofs;
-    dealii::IndexSet                                  relevant_dofs;
-
-    dealii::AffineConstraints<double> hanging_constraints; ///< hanging nodes only
-    dealii::AffineConstraints<double> newton_constraints;  ///< + Dirichlet increments
-
-    dealii::TrilinosWrappers::SparseMatrix system_matrix;
-    dealii::TrilinosWrappers::MPI::Vector  solution;         ///< current iterate (owned)
-    dealii::TrilinosWrappers::MPI::Vector  solution_ghosted; ///< current iterate (relevant)
-    dealii::TrilinosWrappers::MPI::Vector  step_start;       ///< last converged solution
-    dealii::TrilinosWrappers::MPI::Vector  previous_start;   ///< the converged solution before it
-    dealii::TrilinosWrappers::MPI::Vector  newton_start;     ///< iterate at the last linear solve
-    dealii::TrilinosWrappers::MPI::Vector  increment;        ///< Newton increment
-    dealii::TrilinosWrappers::MPI::Vector  rhs;              ///< Newton right-hand side
-    dealii::TrilinosWrappers::MPI::Vector  residual;         ///< f_int - f_ext (reactions)
-    dealii::TrilinosWrappers::MPI::Vector  free_residual;    ///< condensed out-of-balance force
-    dealii::TrilinosWrappers::MPI::Vector  external_force;   ///< surface loads
-    dealii::TrilinosWrappers::MPI::Vector  residual_ghosted; ///< residual with ghost entries
-
-    mechanics::MaterialPointStorage<dim>                    material_points;
+    /** Mesh, FE, DoFs, constraints, matrix, vectors, material points. */
+    mechanics::MechanicalSystem<dim>                        system;
     std::unique_ptr<adaptivity::MaterialPointTransfer<dim>> point_transfer;
 
     mechanics::PlanarKinematics<dim>             kinematics;
@@ -162,24 +127,24 @@ namespace ausroll::scene
     contact::ContactOperator<dim>                contact;
     /** `Contact/Strategy`: when contact statuses change (acts on contact). */
     std::unique_ptr<contact::StatusStrategy> contact_strategy;
-    /** Declared after system_matrix: destroyed first (its kept direct factorisation refers to
-        the matrix). */
+    /** Declared after the system (its matrix): destroyed first (its kept direct factorisation
+        refers to the matrix). */
     solver::LinearSolver<dim> linear_solver;
     solver::NewtonSolver      newton;
+    solver::LoadStepper       stepper; ///< steps, cutbacks, step-size control, predictor
+    /** What Newton iterates on: equilibrium of the system at `time` with contact. */
+    std::unique_ptr<solver::EquilibriumProblem<dim>> equilibrium;
+    /** First crossing of `Loading/Volume change limit` (where, when). */
+    mechanics::DistortionMonitor<dim> distortion;
 
-    double time = 0.;           ///< pseudo-time of the current iterate
-    double last_step_size = 0.; ///< size of the last converged step (predictor)
-    /** First crossing of `Loading/Volume change limit` (where, when), empty while none. */
-    std::string  distortion_warning;
+    double       time = 0.;       ///< pseudo-time of the current iterate
     unsigned int step_number = 0; ///< converged steps so far
     unsigned int output_counter = 0;
     int          last_output_step = -1;
 
-    double last_residual_norm = 0.;
-    double last_reference_force = 0.;
-    double largest_reference_force = 0.; ///< largest force level of the converged steps so far
-    double last_constraint_violation = 0.;
-    double min_cell_diameter = 1.;
+    double start_fraction = 0.;               ///< fraction of the run done before this process
+    double smallest_extent = 0.;              ///< of the workpiece (small-strain warning)
+    bool   large_displacement_warned = false; ///< the small-strain warning was given
 
     /** History columns, CSV files and VTU fields, in their fixed order (setup_postprocessing). */
     std::unique_ptr<io::PostprocessorSet<dim>> postprocessors;

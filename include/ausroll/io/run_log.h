@@ -1,0 +1,80 @@
+/**
+ * @file run_log.h
+ * The lines a run prints on the terminal (`Output/Verbosity`): the header, one line per
+ * converged step, the deterministic regression lines and the closing line.
+ */
+#pragma once
+
+#include <ausroll/io/history.h>
+#include <ausroll/io/output_parameters.h>
+#include <ausroll/solver/newton_solver.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/types.h>
+
+#include <initializer_list>
+#include <string>
+
+namespace ausroll::io
+{
+  /** Whether rank @p rank prints at verbosity @p v a stream meant for the verbosities @p set
+      (only rank 0 prints). */
+  bool prints(const Verbosity v, std::initializer_list<Verbosity> set, const unsigned int rank);
+
+  /** "12.3 s" (one decimal below 10 s). */
+  std::string format_seconds(const double s);
+
+  /**
+   * The header of a run: "ausroll: NAME  (N MPI ranks)", mesh, @p element, @p kinematics and the
+   * output directory on @p log; "scene: NAME" with cells and DoFs on @p regression_log.
+   */
+  void write_run_header(dealii::ConditionalOStream &log,
+                        dealii::ConditionalOStream &regression_log,
+                        const std::string          &name,
+                        const unsigned int          n_ranks,
+                        const unsigned long long    n_cells,
+                        const unsigned long long    n_dofs,
+                        const std::string          &element,
+                        const std::string          &kinematics,
+                        const std::string          &directory);
+
+  /** "finished: N steps in T; history: DIR/history.csv[, ParaView: DIR/solution.pvd]". */
+  void write_run_footer(dealii::ConditionalOStream &log,
+                        const unsigned int          steps,
+                        const double                seconds,
+                        const std::string          &directory,
+                        const bool                  with_vtu);
+
+  /** What the line of a converged step reports. */
+  struct StepSummary
+  {
+    unsigned int         step = 0;                ///< converged steps
+    double               time = 0.;               ///< pseudo-time reached
+    double               fraction = 0.;           ///< time / End time
+    double               start_fraction = 0.;     ///< fraction done before this process started
+    solver::NewtonResult result;                  ///< Newton statistics of the step
+    unsigned int         cutbacks = 0;            ///< cutbacks of the step
+    bool                 contact = false;         ///< the run has dies (stick/slip counts)
+    unsigned int         n_stick = 0, n_slip = 0; ///< sticking / slipping contact nodes
+    dealii::types::global_dof_index n_dofs = 0;   ///< DoFs
+    double                          elapsed = 0.; ///< wall seconds since the start
+  };
+
+  /** "step N  t = ...  (..%)  Newton k  cutbacks c  stick/slip a/b  DoFs n  elapsed  ETA". */
+  void write_step_line(dealii::ConditionalOStream &log, const StepSummary &s);
+
+  /** "step N name=value ..." with 5 digits (wall_seconds and step left out, |x| < 1e-12: 0). */
+  void write_regression_line(dealii::ConditionalOStream &log,
+                             const unsigned int          step,
+                             const HistoryRow           &row);
+
+  /**
+   * The small-strain warning on std::cerr (rank 0) when the largest displacement @p max_u of
+   * step @p step exceeds 10 % of the workpiece's smallest extent @p extent; returns whether it
+   * was given.
+   */
+  bool warn_large_displacement(const unsigned int step,
+                               const double       max_u,
+                               const double       extent,
+                               const unsigned int rank);
+} // namespace ausroll::io

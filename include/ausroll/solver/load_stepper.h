@@ -1,0 +1,131 @@
+/**
+ * @file load_stepper.h
+ * The load-step loop: pseudo-time steps on the grid of nominal steps, cutbacks, the step-size
+ * control of `Loading/Step control`, the linear-extrapolation predictor with its retry, and the
+ * contact strategy's decision at the end of a step. It drives the scene through the small
+ * SteppedProblem interface, so that it can be tested on a model problem without a mesh
+ * (tests/unit/test_load_stepper.cc).
+ */
+#pragma once
+
+#include <ausroll/contact/contact_strategy.h>
+#include <ausroll/solver/loading_parameters.h>
+#include <ausroll/solver/newton_solver.h>
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <string>
+
+namespace ausroll::solver
+{
+  /** A converged load step as the load stepper hands it to SteppedProblem::accept_step(). */
+  struct LoadStep
+  {
+    unsigned int number = 0;   ///< its number (1 for the first step of the run)
+    double       t_start = 0.; ///< pseudo-time at its start
+    double       time = 0.;    ///< pseudo-time reached (t_start + the size actually taken)
+    /** The step size the stepper held before this step (the size it would try next without
+        step control): the adaptivity's look-ahead and the size a checkpoint stores. */
+    double       step_size = 0.;
+    NewtonResult result;       ///< Newton statistics of the converged solve
+    unsigned int cutbacks = 0; ///< cutbacks of this step
+  };
+
+  /**
+   * What the load stepper drives (the scene implements it). A load step, as LoadStepper calls it:
+   *   begin_step(t_start)
+   *   repeat:  solve(t, ratio)         from the committed state (ratio != 0: with the predictor)
+   *            failed:    restart_step(), then again without the predictor or with half the step
+   *            converged: end_of_step(dt): accept, or solve again with dt * step_factor
+   *   accept_step(step)                commit, history, output, ...
+   * After too many cutbacks: keep_last_converged(t_start), then RunFailure.
+   */
+  class SteppedProblem
+  {
+  public:
+    virtual ~SteppedProblem() = default;
+
+    /** A load step begins from the committed state at @p t_start. */
+    virtual void begin_step(const double t_start) = 0;
+
+    /**
+     * Solve the step to pseudo-time @p time from the committed state: the first iterate is the
+     * committed solution u_n, or with @p predictor_ratio != 0 u_n + ratio (u_n - u_n-1).
+     */
+    virtual NewtonResult solve(const double time, const double predictor_ratio) = 0;
+
+    /** The solve failed: the step will be solved again from the committed state. */
+    virtual void restart_step() = 0;
+
+    /** After a converged solve of a step of size @p dt: the contact strategy's decision. */
+    virtual contact::StepDecision end_of_step(const double dt) = 0;
+
+    /**
+     * The run fails: make the committed state at @p t_start the current one and write it out.
+     * Returns a note appended to the failure message (an earlier warning), or "".
+     */
+    virtual std::string keep_last_converged(const double t_start) = 0;
+
+    /** Accept the converged step @p step (commit, history, output, mesh adaptation, ...).
+        Returns the number of contact status changes in the step (adaptive step control). */
+    virtual unsigned int accept_step(const LoadStep &step) = 0;
+  };
+
+  /**
+   * The load steps from a start time to `Loading/End time`. Steps end on the grid of nominal
+   * steps (End time / Number of steps), also after cutbacks and shortened sub-steps, so that the
+   * outputs of different runs share their times. A failed solve is first tried again without
+   * the predictor (if it was used), then with half the step, at most `Maximum cutbacks` times;
+   * then RunFailure names the step, its time, the reason and where the last converged state is.
+   * The next step size: `Step control = halving` keeps the size that worked after a cutback and
+   * grows by `Step growth factor` (to at most the nominal step) otherwise; `adaptive` scales it by
+   * LoadingParameters::step_factor() of the Newton iterations and contact status changes (at most
+   * 1 after a cutback).
+   */
+  class LoadStepper
+  {
+  public:
+    /**
+     * Stepper by @p loading; @p output_directory is named in the failure message. Cutbacks and
+     * retries go to @p log, per-step details (Newton start, step control) to @p detail_log.
+     */
+    LoadStepper(const LoadingParameters    &loading,
+                const std::string          &output_directory,
+                dealii::ConditionalOStream &log,
+                dealii::ConditionalOStream &detail_log);
+
+    /** End time / Number of steps. */
+    double nominal_step_size() const;
+
+    /**
+     * Run the steps of @p problem from @p t_done (after @p steps_done converged steps) with the
+     * step size @p dt to the end time. Throws RunFailure after too many cutbacks.
+     */
+    void run(SteppedProblem &problem, double t_done, double dt, unsigned int steps_done);
+
+    /**
+     * Solve step number @p number from @p t_start with size @p dt (cutbacks, predictor retry,
+     * end-of-step decisions). Returns the converged step (its step_size is left 0).
+     */
+    LoadStep
+    solve_step(SteppedProblem &problem, const unsigned int number, const double t_start, double dt);
+
+    /**
+     * The step size after the converged @p step of size @p dt_taken, when the stepper held
+     * @p dt before it, with @p status_changes contact status changes.
+     */
+    double next_step_size(const double       dt,
+                          const double       dt_taken,
+                          const LoadStep    &step,
+                          const unsigned int status_changes) const;
+
+    /** Size of the last converged step (the predictor's u_n - u_n-1 spans it; 0: none yet). */
+    double last_step_size = 0.;
+
+  private:
+    LoadingParameters           loading;
+    std::string                 output_directory;
+    dealii::ConditionalOStream &log;
+    dealii::ConditionalOStream &detail_log;
+  };
+} // namespace ausroll::solver

@@ -1,0 +1,141 @@
+#include <ausroll/io/checkpoint.h>
+#include <ausroll/io/run_checkpoint.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/solution_transfer.h>
+
+#include <iostream>
+#include <sstream>
+
+namespace ausroll::io
+{
+  using namespace dealii;
+
+  template <int dim>
+  void write_checkpoint(mechanics::MechanicalSystem<dim>         &system,
+                        adaptivity::MaterialPointTransfer<dim>   &points,
+                        const RunState                           &state,
+                        const std::map<std::string, std::string> &entries,
+                        const std::string                        &output_directory)
+  {
+    using Vector = TrilinosWrappers::MPI::Vector;
+    const CheckpointDirectory checkpoints(output_directory, system.comm);
+    const std::string         dir = checkpoints.begin_write();
+
+    parallel::distributed::SolutionTransfer<dim, Vector> transfer(system.dof_handler);
+    // the converged solution before this one too: the predictor of the next step needs it
+    Vector previous_ghosted(system.owned_dofs, system.relevant_dofs, system.comm);
+    previous_ghosted = system.previous_start;
+    transfer.prepare_for_serialization(
+        std::vector<const Vector *>{&system.solution_ghosted, &previous_ghosted});
+    points.prepare();
+    system.triangulation.save(dir + "/mesh");
+
+    CheckpointMetadata meta;
+    meta.values["time"] = {state.time};
+    meta.values["step"] = {double(state.step)};
+    meta.values["dt"] = {state.step_size};
+    meta.values["last_step_size"] = {state.last_step_size};
+    meta.values["previous_solution"] = {1.};
+    meta.set_parameters(entries);
+    meta.values["output_counter"] = {double(state.output_counter)};
+    meta.values["last_output_step"] = {double(state.last_output_step)};
+    meta.values["largest_reference_force"] = {state.largest_reference_force};
+    meta.values["contact"] = state.contact;
+    std::vector<double> output_times;
+    std::string         output_files;
+    for (const auto &[t, file] : state.vtu_records)
+    {
+      output_times.push_back(t);
+      output_files += (output_files.empty() ? "" : " ") + file;
+    }
+    meta.values["output_times"] = output_times;
+    meta.strings["output_files"] = output_files;
+    if (Utilities::MPI::this_mpi_process(system.comm) == 0)
+      meta.write(dir + "/metadata.txt");
+    checkpoints.commit();
+  }
+
+  template <int dim>
+  std::string load_checkpoint_mesh(mechanics::MechanicalSystem<dim>         &system,
+                                   const std::map<std::string, std::string> &entries,
+                                   const std::string                        &output_directory)
+  {
+    const std::string  directory = CheckpointDirectory(output_directory, system.comm).latest();
+    CheckpointMetadata meta;
+    meta.read(directory + "/metadata.txt");
+    for (const std::string &warning : compare_resume_parameters(meta, entries, directory))
+      if (Utilities::MPI::this_mpi_process(system.comm) == 0)
+        std::cerr << "ausroll: warning: " << warning << std::endl;
+    system.triangulation.load(directory + "/mesh");
+    return directory;
+  }
+
+  template <int dim>
+  void load_checkpoint_vectors(mechanics::MechanicalSystem<dim>       &system,
+                               adaptivity::MaterialPointTransfer<dim> &points,
+                               const std::string                      &directory)
+  {
+    CheckpointMetadata meta;
+    meta.read(directory + "/metadata.txt");
+    // Same order as in write_checkpoint(): solution first, then the material points.
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector> transfer(
+        system.dof_handler);
+    // with the converged solution before it (the predictor's), if the checkpoint has it
+    std::vector<TrilinosWrappers::MPI::Vector *> vectors{&system.solution};
+    if (meta.values.count("previous_solution") > 0)
+      vectors.push_back(&system.previous_start);
+    transfer.deserialize(vectors);
+    system.solution_ghosted = system.solution;
+    system.step_start = system.solution;
+    points.prepare();
+    points.unpack();
+  }
+
+  RunState read_run_state(const std::string &directory)
+  {
+    CheckpointMetadata meta;
+    meta.read(directory + "/metadata.txt");
+    RunState state;
+    state.time = meta.get("time");
+    state.step = static_cast<unsigned int>(meta.get("step"));
+    state.step_size = meta.get("dt");
+    state.output_counter = static_cast<unsigned int>(meta.get("output_counter"));
+    state.last_output_step = static_cast<int>(meta.get("last_output_step"));
+    state.largest_reference_force = meta.get("largest_reference_force");
+    if (meta.values.count("last_step_size") > 0)
+      state.last_step_size = meta.get("last_step_size");
+    state.contact = meta.values["contact"];
+    std::istringstream files(meta.strings["output_files"]);
+    for (const double t : meta.values["output_times"])
+    {
+      std::string file;
+      files >> file;
+      state.vtu_records.emplace_back(t, file);
+    }
+    return state;
+  }
+
+  template void        write_checkpoint(mechanics::MechanicalSystem<2> &,
+                                        adaptivity::MaterialPointTransfer<2> &,
+                                        const RunState &,
+                                        const std::map<std::string, std::string> &,
+                                        const std::string &);
+  template void        write_checkpoint(mechanics::MechanicalSystem<3> &,
+                                        adaptivity::MaterialPointTransfer<3> &,
+                                        const RunState &,
+                                        const std::map<std::string, std::string> &,
+                                        const std::string &);
+  template std::string load_checkpoint_mesh(mechanics::MechanicalSystem<2> &,
+                                            const std::map<std::string, std::string> &,
+                                            const std::string &);
+  template std::string load_checkpoint_mesh(mechanics::MechanicalSystem<3> &,
+                                            const std::map<std::string, std::string> &,
+                                            const std::string &);
+  template void        load_checkpoint_vectors(mechanics::MechanicalSystem<2> &,
+                                               adaptivity::MaterialPointTransfer<2> &,
+                                               const std::string &);
+  template void        load_checkpoint_vectors(mechanics::MechanicalSystem<3> &,
+                                               adaptivity::MaterialPointTransfer<3> &,
+                                               const std::string &);
+} // namespace ausroll::io

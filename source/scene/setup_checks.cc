@@ -1,0 +1,57 @@
+#include <ausroll/core/parse_utilities.h>
+#include <ausroll/geometry/workpiece.h>
+#include <ausroll/scene/setup_checks.h>
+
+#include <deal.II/grid/grid_tools.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace ausroll::scene
+{
+  template <int dim>
+  void check_setup(const SceneParameters                    &parameters,
+                   const dealii::Triangulation<dim>         &triangulation,
+                   const mechanics::BoundaryConditions<dim> &boundary_conditions,
+                   const contact::ContactOperator<dim>      &contact)
+  {
+    // Every boundary-id entry against the ids the mesh has.
+    const auto &conditions = parameters.boundary_conditions.conditions;
+    for (unsigned int i = 0; i < conditions.size(); ++i)
+      geometry::require_boundary_ids(triangulation,
+                                     {conditions[i].id},
+                                     "Boundary conditions/Condition " + std::to_string(i)
+                                         + "/Boundary id");
+    for (unsigned int k = 0; k < parameters.contact.dies.size(); ++k)
+      geometry::require_boundary_ids(triangulation,
+                                     parameters.contact.dies[k].candidate_boundaries,
+                                     "Contact/Die " + std::to_string(k) + "/Candidate boundaries");
+    geometry::require_boundary_ids(triangulation,
+                                   parse_unsigned_list(parameters.postprocess.reaction_boundaries,
+                                                       "Postprocess/Reaction boundaries"),
+                                   "Postprocess/Reaction boundaries");
+    geometry::require_boundary_ids(triangulation,
+                                   parameters.postprocess.boundary_profile.boundary_ids,
+                                   "Postprocess/Boundary profile/Boundary ids");
+    if (parameters.model.planar_model == mechanics::PlanarModel::axisymmetric)
+      geometry::require_off_axis(triangulation, "Model/Planar model = axisymmetric");
+
+    // Loads and dies at a bounded number of times.
+    const solver::LoadingParameters &loading = parameters.loading;
+    const unsigned int               n_samples = std::min(loading.number_of_steps, 256u);
+    std::vector<double>              times;
+    for (unsigned int k = 0; k <= n_samples; ++k)
+      times.push_back(loading.end_time * k / n_samples);
+    boundary_conditions.check_values(triangulation, times);
+    const auto box = dealii::GridTools::compute_bounding_box(triangulation);
+    if (contact.active())
+      contact.check_dies(
+          times, box.get_boundary_points().first.distance(box.get_boundary_points().second));
+  }
+
+  template void check_setup(const SceneParameters &,
+                            const dealii::Triangulation<2> &,
+                            const mechanics::BoundaryConditions<2> &,
+                            const contact::ContactOperator<2> &);
+} // namespace ausroll::scene

@@ -1,0 +1,133 @@
+#include <ausroll/core/exceptions.h>
+#include <ausroll/solver/load_stepper.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace ausroll::solver
+{
+  LoadStepper::LoadStepper(const LoadingParameters    &loading,
+                           const std::string          &output_directory,
+                           dealii::ConditionalOStream &log,
+                           dealii::ConditionalOStream &detail_log)
+      : loading(loading)
+      , output_directory(output_directory)
+      , log(log)
+      , detail_log(detail_log)
+  {
+  }
+
+  double LoadStepper::nominal_step_size() const
+  {
+    return loading.end_time / loading.number_of_steps;
+  }
+
+  LoadStep LoadStepper::solve_step(SteppedProblem    &problem,
+                                   const unsigned int number,
+                                   const double       t_start,
+                                   double             dt)
+  {
+    LoadStep step;
+    step.number = number;
+    step.t_start = t_start;
+    problem.begin_step(t_start);
+    // A step that fails with the predictor is first tried again from the converged state (the
+    // extrapolation overshoots where the path turns: a fold-over corner, a node reaching a die).
+    bool predict = loading.predictor == Predictor::linear_extrapolation && last_step_size > 0.;
+    for (;;)
+    {
+      const double time = t_start + dt;
+      detail_log << "  step " << number << ", t = " << time << std::endl;
+      step.result = problem.solve(time, predict ? dt / last_step_size : 0.);
+      const NewtonResult &result = step.result;
+
+      if (!result.converged && predict)
+      {
+        predict = false;
+        problem.restart_step();
+        log << "  step " << number << " (t = " << time << "): " << result.reason
+            << "; trying again without the predictor" << std::endl;
+        continue;
+      }
+      if (!result.converged)
+      {
+        ++step.cutbacks;
+        problem.restart_step();
+        log << "  step " << number << " (t = " << time << "): " << result.reason;
+        if (step.cutbacks > loading.max_cutbacks)
+        {
+          log << std::endl;
+          // Keep the last converged state in memory and on disk.
+          const std::string  note = problem.keep_last_converged(t_start);
+          std::ostringstream msg;
+          msg << "load step " << number << " (t = " << t_start + dt << ") did not converge after "
+              << loading.max_cutbacks << " cutbacks: " << result.reason
+              << ". The last converged state (step " << number - 1 << ", t = " << t_start
+              << ") is in " << output_directory << "/";
+          if (!note.empty())
+            msg << ". Earlier, " << note;
+          throw RunFailure(msg.str());
+        }
+        dt *= 0.5;
+        log << "; cutting back to dt = " << dt << std::endl;
+        continue;
+      }
+      // The contact strategy may end the step earlier, where a contact status changes.
+      const contact::StepDecision decision = problem.end_of_step(dt);
+      if (decision.accept)
+      {
+        step.time = time;
+        return step;
+      }
+      dt *= decision.step_factor;
+    }
+  }
+
+  double LoadStepper::next_step_size(const double       dt,
+                                     const double       dt_taken,
+                                     const LoadStep    &step,
+                                     const unsigned int status_changes) const
+  {
+    const double nominal_dt = nominal_step_size();
+    if (loading.step_control == StepControl::adaptive)
+    {
+      // From the step actually taken after a cutback, else from the size asked for (a step
+      // shortened to end on the nominal grid says nothing about the size that works).
+      double factor = loading.step_factor(step.result.iterations, status_changes);
+      if (step.cutbacks > 0)
+        factor = std::min(factor, 1.);
+      const double next = std::min(nominal_dt, (step.cutbacks > 0 ? dt_taken : dt) * factor);
+      detail_log << "  step control: " << step.result.iterations << " Newton iterations, "
+                 << status_changes << " contact status changes, " << step.cutbacks
+                 << " cutbacks: next dt = " << next << std::endl;
+      return next;
+    }
+    return step.cutbacks > 0 ? dt_taken : std::min(nominal_dt, dt * loading.step_growth_factor);
+  }
+
+  void LoadStepper::run(SteppedProblem &problem, double t_done, double dt, unsigned int steps_done)
+  {
+    const double nominal_dt = nominal_step_size();
+    const double t_end = loading.end_time;
+    while (t_done < t_end * (1. - 1e-12))
+    {
+      // Steps end on the grid of nominal steps (also after cutbacks and load-increment-ratio
+      // sub-steps), so that outputs and histories of different runs share their times.
+      const double next_grid
+          = std::min(t_end, nominal_dt * (std::floor(t_done / nominal_dt + 1e-9) + 1.));
+      double dt_try = std::min(dt, next_grid - t_done);
+      if (t_end - (t_done + dt_try) < 1e-6 * nominal_dt)
+        dt_try = t_end - t_done;
+
+      LoadStep step = solve_step(problem, steps_done + 1, t_done, dt_try);
+      dt_try = step.time - step.t_start;
+      last_step_size = dt_try;
+      step.step_size = dt;
+      const unsigned int status_changes = problem.accept_step(step);
+      ++steps_done;
+      t_done = step.time;
+      dt = next_step_size(dt, dt_try, step, status_changes);
+    }
+  }
+} // namespace ausroll::solver

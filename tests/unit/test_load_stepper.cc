@@ -1,0 +1,305 @@
+/**
+ * @file test_load_stepper.cc
+ * solver::LoadStepper on a model problem without a mesh: a SteppedProblem whose solve converges
+ * or fails by a rule of the step size, the predictor ratio and the step number, and which
+ * records every call. End time 1 with 4 nominal steps (dt = 0.25; all step sizes below are
+ * binary fractions, so the times are exact and compared with ==). Tested: halving cutbacks and
+ * the size kept after them, growth back to the nominal step, the retry without the predictor
+ * (and the predictor ratio dt / dt_prev), the RunFailure message after too many cutbacks with the
+ * last converged state, the adaptive step control (shrink by target / actual Newton iterations
+ * and status changes, growth after easy steps), and a contact strategy that shortens a step.
+ */
+#include <ausroll/core/exceptions.h>
+#include <ausroll/solver/load_stepper.h>
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  using namespace ausroll;
+  using namespace ausroll::solver;
+
+  /** One solve the stepper asked for. */
+  struct Solve
+  {
+    unsigned int step;      ///< step number (converged steps + 1)
+    double       dt;        ///< time - t_start
+    double       ratio;     ///< predictor ratio (0: none)
+    bool         converged; ///< the outcome
+  };
+
+  class MockProblem : public SteppedProblem
+  {
+  public:
+    /** Converged? for (step number, dt, ratio); default: always. */
+    std::function<bool(unsigned int, double, double)> converges
+        = [](unsigned int, double, double) { return true; };
+    /** Newton iterations of a converged solve of a step; default 3. */
+    std::function<unsigned int(unsigned int)> iterations = [](unsigned int) { return 3u; };
+    /** Status changes reported by accept_step(); default 0. */
+    std::function<unsigned int(unsigned int)> status_changes = [](unsigned int) { return 0u; };
+    /** end_of_step() decision for (step number, dt); default accept. */
+    std::function<contact::StepDecision(unsigned int, double)> decide
+        = [](unsigned int, double) { return contact::StepDecision(); };
+
+    std::vector<Solve>    solves;
+    std::vector<LoadStep> accepted;
+    unsigned int          restarts = 0;
+    std::vector<double>   kept; ///< keep_last_converged() times
+
+    void begin_step(const double t) override
+    {
+      t_start = t;
+      EXPECT_EQ(t, accepted.empty() ? 0. : accepted.back().time);
+    }
+    NewtonResult solve(const double time, const double ratio) override
+    {
+      const unsigned int step = accepted.size() + 1;
+      NewtonResult       r;
+      r.converged = converges(step, time - t_start, ratio);
+      r.iterations = r.converged ? iterations(step) : 20;
+      r.reason = r.converged ? "" : "residual diverged";
+      solves.push_back({step, time - t_start, ratio, r.converged});
+      return r;
+    }
+    void                  restart_step() override { ++restarts; }
+    contact::StepDecision end_of_step(const double dt) override
+    {
+      return decide(accepted.size() + 1, dt);
+    }
+    std::string keep_last_converged(const double t) override
+    {
+      kept.push_back(t);
+      return "the mesh folds at step 0";
+    }
+    unsigned int accept_step(const LoadStep &step) override
+    {
+      accepted.push_back(step);
+      return status_changes(step.number);
+    }
+
+    /** Times of the accepted steps. */
+    std::vector<double> times() const
+    {
+      std::vector<double> t;
+      for (const LoadStep &s : accepted)
+        t.push_back(s.time);
+      return t;
+    }
+
+  private:
+    double t_start = 0.;
+  };
+
+  LoadingParameters loading()
+  {
+    LoadingParameters p;
+    p.end_time = 1.;
+    p.number_of_steps = 4;
+    p.max_cutbacks = 6;
+    p.step_growth_factor = 1.5;
+    return p;
+  }
+
+  struct Logs
+  {
+    std::ostringstream         text, details;
+    dealii::ConditionalOStream log{text, true}, detail_log{details, true};
+  };
+} // namespace
+
+// Steps above 0.1 fail: 0.25 -> 0.125 -> 0.0625 (2 cutbacks); the size that worked is kept
+// (0.0625), then grows by 1.5 (0.09375) and is clipped to the nominal grid (0.25 - 0.21875).
+TEST(LoadStepper, HalvingCutsBackKeepsTheSizeThatWorkedAndGrows)
+{
+  Logs        logs;
+  LoadStepper stepper(loading(), "out", logs.log, logs.detail_log);
+  MockProblem p;
+  p.converges = [](unsigned int, double dt, double) { return dt <= 0.1; };
+  stepper.run(p, 0., stepper.nominal_step_size(), 0);
+
+  ASSERT_GE(p.solves.size(), 6u);
+  const double tried[] = {0.25, 0.125, 0.0625, 0.0625, 0.09375, 0.03125};
+  for (unsigned int i = 0; i < 6; ++i)
+    EXPECT_EQ(p.solves[i].dt, tried[i]) << "solve " << i;
+  EXPECT_EQ(p.accepted[0].cutbacks, 2u);
+  EXPECT_EQ(p.accepted[0].time, 0.0625);
+  EXPECT_EQ(p.accepted[0].step_size, 0.25); // the size held before the step
+  EXPECT_EQ(p.accepted[1].cutbacks, 0u);
+  EXPECT_EQ(p.accepted[2].time, 0.21875);
+  EXPECT_EQ(p.accepted[3].time, 0.25);                        // on the nominal grid
+  EXPECT_EQ(p.restarts, p.solves.size() - p.accepted.size()); // one per failed solve
+  // every step number once, in order, and the run ends at exactly t = 1 on the grid
+  for (unsigned int i = 0; i < p.accepted.size(); ++i)
+  {
+    EXPECT_EQ(p.accepted[i].number, i + 1);
+    EXPECT_LE(p.accepted[i].time - p.accepted[i].t_start, 0.1);
+  }
+  EXPECT_EQ(p.accepted.back().time, 1.);
+  EXPECT_NE(logs.text.str().find("  step 1 (t = 0.25): residual diverged; cutting back to dt = "
+                                 "0.125\n"),
+            std::string::npos)
+      << logs.text.str();
+  EXPECT_EQ(stepper.last_step_size, p.accepted.back().time - p.accepted.back().t_start);
+}
+
+// With the predictor the first step has none (no previous step); then ratio = dt / dt_prev. A
+// failure with the predictor is retried without it, at the same dt and without a cutback.
+TEST(LoadStepper, RetryWithoutPredictorBeforeCuttingBack)
+{
+  Logs              logs;
+  LoadingParameters l = loading();
+  l.predictor = Predictor::linear_extrapolation;
+  LoadStepper stepper(l, "out", logs.log, logs.detail_log);
+  MockProblem p;
+  p.converges = [](unsigned int step, double, double ratio) { return step != 2 || ratio == 0.; };
+  stepper.run(p, 0., 0.25, 0);
+
+  ASSERT_EQ(p.accepted.size(), 4u);
+  ASSERT_EQ(p.solves.size(), 5u);
+  EXPECT_EQ(p.solves[0].ratio, 0.); // step 1: no previous step
+  EXPECT_EQ(p.solves[1].ratio, 1.); // step 2: 0.25 / 0.25, fails
+  EXPECT_FALSE(p.solves[1].converged);
+  EXPECT_EQ(p.solves[2].ratio, 0.); // step 2 again, without the predictor, same dt
+  EXPECT_EQ(p.solves[2].dt, 0.25);
+  EXPECT_EQ(p.solves[3].ratio, 1.); // step 3: with the predictor again
+  EXPECT_EQ(p.accepted[1].cutbacks, 0u);
+  EXPECT_EQ(p.restarts, 1u);
+  EXPECT_NE(logs.text.str().find("  step 2 (t = 0.5): residual diverged; trying again without "
+                                 "the predictor"),
+            std::string::npos)
+      << logs.text.str();
+}
+
+// Predictor ratio after a cutback: step 1 (no predictor) converges at 0.125 after one cutback,
+// step 2 keeps 0.125 (ratio 0.125 / 0.125 = 1), step 3 grows to 0.1875 (ratio 1.5).
+TEST(LoadStepper, PredictorRatioIsStepOverLastStep)
+{
+  Logs              logs;
+  LoadingParameters l = loading();
+  l.predictor = Predictor::linear_extrapolation;
+  LoadStepper stepper(l, "out", logs.log, logs.detail_log);
+  MockProblem p;
+  p.converges = [](unsigned int step, double dt, double) { return dt <= (step == 1 ? 0.2 : 1.); };
+  stepper.run(p, 0., 0.25, 0);
+  ASSERT_GE(p.solves.size(), 4u);
+  EXPECT_EQ(p.solves[1].dt, 0.125);
+  EXPECT_EQ(p.solves[2].dt, 0.125); // size kept after the cutback
+  EXPECT_EQ(p.solves[2].ratio, 1.);
+  EXPECT_EQ(p.solves[3].dt, 0.1875); // 0.125 * 1.5
+  EXPECT_EQ(p.solves[3].ratio, 1.5); // 0.1875 / 0.125
+}
+
+// A step that never converges: after Maximum cutbacks (3) the last converged state is kept and
+// RunFailure names the step, the time of the last try, the reason, the last converged step and
+// time, the output directory and the earlier warning.
+TEST(LoadStepper, TooManyCutbacksFailWithLastConvergedState)
+{
+  Logs              logs;
+  LoadingParameters l = loading();
+  l.max_cutbacks = 3;
+  LoadStepper stepper(l, "out", logs.log, logs.detail_log);
+  MockProblem p;
+  p.converges = [](unsigned int step, double, double) { return step == 1; };
+  try
+  {
+    stepper.run(p, 0., 0.25, 0);
+    FAIL() << "no RunFailure";
+  }
+  catch (const RunFailure &e)
+  {
+    EXPECT_EQ(std::string(e.what()),
+              "load step 2 (t = 0.28125) did not converge after 3 cutbacks: residual diverged. "
+              "The last converged state (step 1, t = 0.25) is in out/. Earlier, the mesh folds "
+              "at step 0");
+  }
+  ASSERT_EQ(p.accepted.size(), 1u);
+  ASSERT_EQ(p.solves.size(), 5u); // step 1, then 0.25, 0.125, 0.0625, 0.03125
+  EXPECT_EQ(p.solves.back().dt, 0.03125);
+  EXPECT_EQ(p.restarts, 4u);
+  ASSERT_EQ(p.kept.size(), 1u);
+  EXPECT_EQ(p.kept[0], 0.25);
+}
+
+// Step control = adaptive: 12 Newton iterations (target 6) halve the step, easy steps (<= 3
+// iterations, <= 2 status changes) grow it by 1.5 (from the size asked for, not the one clipped
+// to the grid), 8 status changes (target 4) halve it; never above the nominal step.
+TEST(LoadStepper, AdaptiveStepControlShrinksAndGrows)
+{
+  Logs              logs;
+  LoadingParameters l = loading();
+  l.step_control = StepControl::adaptive;
+  LoadStepper stepper(l, "out", logs.log, logs.detail_log);
+  MockProblem p;
+  p.iterations = [](unsigned int step) { return step == 1 ? 12u : 2u; };
+  p.status_changes = [](unsigned int step) { return step == 4 ? 8u : 0u; };
+  stepper.run(p, 0., 0.25, 0);
+  EXPECT_EQ(p.times(), (std::vector<double>{0.25, 0.375, 0.5, 0.75, 0.875, 1.}));
+  EXPECT_EQ(p.solves.size(), 6u);
+  EXPECT_NE(logs.details.str().find("  step control: 12 Newton iterations, 0 contact status "
+                                    "changes, 0 cutbacks: next dt = 0.125"),
+            std::string::npos)
+      << logs.details.str();
+}
+
+// Adaptive after a cutback: the factor is at most 1 and applies to the size taken.
+TEST(LoadStepper, AdaptiveAfterCutbackKeepsTheSizeTaken)
+{
+  Logs              logs;
+  LoadingParameters l = loading();
+  l.step_control = StepControl::adaptive;
+  LoadStepper stepper(l, "out", logs.log, logs.detail_log);
+  MockProblem p;
+  p.converges = [](unsigned int step, double dt, double) { return step > 1 || dt <= 0.2; };
+  p.iterations = [](unsigned int) { return 2u; };
+  stepper.run(p, 0., 0.25, 0);
+  ASSERT_GE(p.solves.size(), 3u);
+  EXPECT_EQ(p.solves[1].dt, 0.125);
+  EXPECT_EQ(p.solves[2].dt, 0.125); // easy, but after a cutback: factor 1
+  EXPECT_EQ(p.solves[3].dt, 0.1875);
+}
+
+// A contact strategy that shortens step 1 to half (a status change inside it, load-increment
+// ratio): the step is solved again with dt / 2 and accepted there; the run goes on to the grid.
+TEST(LoadStepper, ContactStrategyShortensTheStep)
+{
+  Logs        logs;
+  LoadStepper stepper(loading(), "out", logs.log, logs.detail_log);
+  MockProblem p;
+  p.decide = [](unsigned int step, double dt)
+  {
+    contact::StepDecision d;
+    if (step == 1 && dt == 0.25)
+    {
+      d.accept = false;
+      d.step_factor = 0.5;
+    }
+    return d;
+  };
+  stepper.run(p, 0., 0.25, 0);
+  EXPECT_EQ(p.times(), (std::vector<double>{0.125, 0.25, 0.5, 0.75, 1.}));
+  EXPECT_EQ(p.accepted[0].cutbacks, 0u);
+  EXPECT_EQ(p.restarts, 0u);
+}
+
+// Resumed runs continue at their step number and time.
+TEST(LoadStepper, ResumesAtGivenStepAndTime)
+{
+  Logs        logs;
+  LoadStepper stepper(loading(), "out", logs.log, logs.detail_log);
+  MockProblem p;
+  p.accepted.push_back({}); // as if step 1 had been accepted at t = 0.5 (begin_step checks it)
+  p.accepted.back().time = 0.5;
+  stepper.run(p, 0.5, 0.25, 2);
+  ASSERT_EQ(p.accepted.size(), 3u);
+  EXPECT_EQ(p.accepted[1].number, 3u);
+  EXPECT_EQ(p.accepted[1].t_start, 0.5);
+  EXPECT_EQ(p.accepted[2].time, 1.);
+}
