@@ -3,8 +3,9 @@
 # The runs of doc/benchmarks.md, section "3D linear solver": benchmarks/amg_3d on Q1 blocks of
 # N^3 cells (N = 8, 16, 32, 64: three refinements) for the elastic, small-strain plastic and
 # finite-strain plastic tangents with AMG, the direct solver (MUMPS) as far as it fits, Q2 blocks,
-# and np = 2 for the largest. Each run under `ulimit -v 16000000`, CPU time and peak memory from
-# /usr/bin/time (user, sys, wall in s, max resident kB).
+# and np = 2 for the largest (np = 1 vs np = 2 side by side: benchmarks/amg_3d_parallel.sh). Each
+# run under `ulimit -v 16000000`, CPU time and peak memory from /usr/bin/time (user, sys, wall in
+# s, max resident kB).
 set -u
 BUILD="$1"
 LOG="$2"
@@ -27,6 +28,6 @@ for n in 8 16; do run "$EXE" elastic $n 1 klu; done
 # Q2
 for n in 4 8 16; do run "$EXE" elastic $n 2 amg; done
 for n in 4 8; do run "$EXE" elastic $n 2 mumps; done
-# two ranks on the largest (fails in the ML set-up on this branch: doc/benchmarks.md)
+# two ranks on the largest
 for mode in elastic plastic; do run mpirun -np 2 "$EXE" $mode 64 1 amg; done
 run mpirun -np 2 "$EXE" elastic 16 1 mumps

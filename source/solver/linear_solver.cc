@@ -183,7 +183,11 @@ namespace ausroll::solver
         // (an Epetra_MultiVector of no vectors throws: create it only when there are modes)
         const unsigned int n_local = A.local_range().second - A.local_range().first;
         std::unique_ptr<Epetra_MultiVector> modes;
-        if (!rigid_body_modes.empty() && rigid_body_modes[0].size() == n_local)
+        // ML's parameters must agree on every rank (its set-up reduces over them): use the modes
+        // only if every rank has them for its rows
+        const bool modes_here = !rigid_body_modes.empty() && rigid_body_modes[0].size() == n_local;
+        double     dummy_mode_value = 0.;
+        if (Utilities::MPI::min(modes_here ? 1u : 0u, A.get_mpi_communicator()) == 1u)
         {
           modes = std::make_unique<Epetra_MultiVector>(A.trilinos_matrix().DomainMap(),
                                                        rigid_body_modes.size());
@@ -197,7 +201,8 @@ namespace ausroll::solver
           list.set("PDE equations", int(dim));
           list.set("null space: type", "pre-computed");
           list.set("null space: dimension", modes->NumVectors());
-          list.set("null space: vectors", modes->Values());
+          // (a rank without rows still passes a valid pointer, as ML requires)
+          list.set("null space: vectors", n_local > 0 ? modes->Values() : &dummy_mode_value);
         }
         TrilinosWrappers::PreconditionAMG amg;
         amg.initialize(A, list);
