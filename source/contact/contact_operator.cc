@@ -22,10 +22,19 @@ namespace ausroll::contact
   {
     constexpr double infinity = std::numeric_limits<double>::infinity();
 
-    template <int dim>
-    Point<2> to_2d(const Point<dim> &p)
+    /** Magnitude of tangential components (2D: |R_t| as before; 3D: the Euclidean norm). */
+    template <std::size_t n>
+    double magnitude(const std::array<double, n> &v)
     {
-      return Point<2>(p[0], p[1]);
+      if constexpr (n == 1)
+        return std::abs(v[0]);
+      else
+      {
+        double sum = 0.;
+        for (const double x : v)
+          sum += x * x;
+        return std::sqrt(sum);
+      }
     }
   } // namespace
 
@@ -33,9 +42,8 @@ namespace ausroll::contact
   ContactOperator<dim>::ContactOperator(const ContactParameters &parameters)
       : parameters(parameters)
   {
-    static_assert(dim == 2, "rigid dies are two-dimensional");
     for (unsigned int k = 0; k < parameters.dies.size(); ++k)
-      dies.push_back(std::make_unique<RigidDie>(parameters.dies[k], k));
+      dies.push_back(std::make_unique<RigidDie<dim>>(parameters.dies[k], k));
   }
 
   template <int dim>
@@ -47,6 +55,11 @@ namespace ausroll::contact
     nodes.clear();
     transforms.clear();
     gap_tolerance = 1e-9 * length_scale;
+    slip_length = 1e-2 * length_scale;
+    // 2D: a reversal of the arc length beyond the gap tolerance (as before); 3D: beyond 1e-5 of
+    // the length scale, so that the direction noise of a slip much shorter than slip_length (the
+    // small sub-steps of the load-increment ratio) does not stick a node that keeps sliding
+    reversal_tolerance = dim == 2 ? gap_tolerance : 1e-3 * slip_length;
     if (!active())
       return;
 
@@ -168,14 +181,14 @@ namespace ausroll::contact
       for (unsigned int c = 0; c < dim; ++c)
         n.x[c] = n.X[c] + u[n.dofs[c]];
       if (n.current.status != ContactStatus::open)
-        n.projection = dies[n.current.die]->project(to_2d(n.x), time);
+        n.projection = dies[n.current.die]->project(n.x, time);
       else
       {
-        n.projection = DieProjection();
+        n.projection = DieProjection<dim>();
         n.current.die = -1;
         for (const unsigned int k : n.dies)
         {
-          const DieProjection p = dies[k]->project(to_2d(n.x), time);
+          const DieProjection<dim> p = dies[k]->project(n.x, time);
           if (p.valid && (!n.projection.valid || p.gap < n.projection.gap))
           {
             n.projection = p;
@@ -191,6 +204,9 @@ namespace ausroll::contact
             && n.projection.gap < (n.changes == 0 ? gap_tolerance : -gap_tolerance))
           switch_status(n, closing_status(n));
       }
+      if constexpr (dim == 3)
+        if (n.current.status == ContactStatus::slip)
+          update_slip_direction(n);
       if (n.current.status != ContactStatus::open)
         ++closed;
     }
@@ -215,22 +231,118 @@ namespace ausroll::contact
     // equations have been solved with its new constraint.
     n.fresh = hold_changed;
     if (status == ContactStatus::stick)
+    {
       // A node that stops slipping sticks where its slip started (no relative motion over the
       // step); a node that closes sticks where it meets the die.
-      n.current.stick = n.current.status == ContactStatus::slip
-                            ? dies[n.current.die]->die_surface().point_at(n.current.s)
-                            : n.projection.local_point;
+      if (n.current.status != ContactStatus::slip)
+        n.current.stick = n.projection.local_point;
+      else if constexpr (dim == 2)
+        n.current.stick = dies[n.current.die]->die_surface().point_at(n.current.s);
+      else
+        n.current.stick = n.current.start;
+    }
     if (status == ContactStatus::slip)
     {
-      // direction of the slip along the die tangent: opposite to the tangential force
-      n.current.sign = n.current.Rt > 0. ? -1 : (n.current.Rt < 0. ? 1 : 0);
-      n.current.s = n.current.status == ContactStatus::stick
-                        ? dies[n.current.die]->die_surface().project(n.current.stick).s
-                        : n.projection.s;
+      // direction of the slip: opposite to the tangential force (3D: -R_T / |R_T|, the radial
+      // return onto the isotropic cone)
+      if constexpr (dim == 2)
+        n.current.direction[0] = n.current.Rt[0] > 0. ? -1 : (n.current.Rt[0] < 0. ? 1 : 0);
+      else
+      {
+        const double size = magnitude(n.current.Rt);
+        for (unsigned int a = 0; a < dim - 1; ++a)
+          n.current.direction[a] = size > 0. ? -n.current.Rt[a] / size : 0.;
+      }
+      if constexpr (dim == 2)
+        n.current.s = n.current.status == ContactStatus::stick
+                          ? dies[n.current.die]->die_surface().project(n.current.stick).s
+                          : n.projection.s;
+      else
+      {
+        n.current.start
+            = n.current.status == ContactStatus::stick ? n.current.stick : n.projection.local_point;
+        n.current.s = n.projection.s;
+      }
     }
     if (status == ContactStatus::open)
-      n.current.sign = 0;
+      n.current.direction = {};
+    n.direction_pending = false;
     n.current.status = status;
+  }
+
+  template <int dim>
+  std::array<double, dim - 1> ContactOperator<dim>::slip_increment(const Node &n) const
+  {
+    // the die-relative displacement of the contact point since the slip started, in the global
+    // frame of the current pose, resolved along the current tangents
+    const Tensor<1, dim> slip = dies[n.current.die]->pose(time).rotate_vector_to_global(
+        n.projection.local_point - n.current.start);
+    std::array<double, dim - 1> components;
+    for (unsigned int a = 0; a < dim - 1; ++a)
+      components[a] = slip * n.projection.tangents[a];
+    return components;
+  }
+
+  template <int dim>
+  void ContactOperator<dim>::update_slip_direction(Node &n) const
+  {
+    // The friction force opposes the slip of the node over the step so far (backward Euler in
+    // the direction: d = slip / |slip|) once that slip is well defined, i.e. larger than
+    // slip_length; a smaller slip keeps the direction it had (from the tangential force when the
+    // node began to slip, or from the previous step), as the 2D sign is kept.
+    if (n.direction_pending)
+    {
+      n.current.direction = n.next_direction;
+      n.direction_pending = false;
+    }
+    const std::array<double, dim - 1> slip = slip_increment(n);
+    const double                      size = magnitude(slip);
+    if (size > slip_length)
+      for (unsigned int a = 0; a < dim - 1; ++a)
+        n.current.direction[a] = slip[a] / size;
+  }
+
+  template <int dim>
+  double ContactOperator<dim>::slip_along_direction(const Node &n) const
+  {
+    if constexpr (dim == 2)
+      return n.current.direction[0]
+             * die_coordinate_difference(n.current.die, n.projection.s, n.current.s);
+    else
+    {
+      const std::array<double, dim - 1> slip = slip_increment(n);
+      double                            along = 0.;
+      for (unsigned int a = 0; a < dim - 1; ++a)
+        along += n.current.direction[a] * slip[a];
+      return along;
+    }
+  }
+
+  template <int dim>
+  Tensor<1, dim> ContactOperator<dim>::slip_vector(const Node &n) const
+  {
+    Tensor<1, dim> d;
+    for (unsigned int a = 0; a < dim - 1; ++a)
+      d += n.current.direction[a] * n.projection.tangents[a];
+    return d;
+  }
+
+  template <int dim>
+  double ContactOperator<dim>::unlimited_gap(const unsigned int k,
+                                             const Point<dim>  &x,
+                                             const double       t) const
+  {
+    // no search-distance limit here: adaptivity and the die checks look at the whole workpiece
+    if constexpr (dim == 2)
+    {
+      const Projection p = dies[k]->die_surface().project(dies[k]->pose(t).to_local(x));
+      return p.valid ? p.gap : infinity;
+    }
+    else
+    {
+      const SurfaceProjection<dim> p = dies[k]->surface().project(dies[k]->pose(t).to_local(x));
+      return p.valid ? p.gap : infinity;
+    }
   }
 
   template <int dim>
@@ -238,11 +350,10 @@ namespace ausroll::contact
                                                          const double       s1,
                                                          const double       s0) const
   {
-    double            d = s1 - s0;
-    const DieProfile &surface = dies[die]->die_surface();
-    if (surface.is_closed())
+    double       d = s1 - s0;
+    const double L = dies[die]->surface().coordinate_periods()[0];
+    if (L > 0.)
     {
-      const double L = surface.total_length();
       if (d > 0.5 * L)
         d -= L;
       else if (d < -0.5 * L)
@@ -258,20 +369,22 @@ namespace ausroll::contact
     // A slipping node's tangential equation becomes t.r + s T(n.r) = 0 (s the slip sign, T the
     // slip limit of the friction law, affine near the current state: T = T(0) + T' R_n), i.e.
     // rows <- (I + s T' t (x) n) rows + s T(0) t: Coulomb I + mu s t (x) n, Tresca an offset.
+    // 3D: s t is the slip direction vector d = d_1 t_1 + d_2 t_2 of the tangent plane, and the
+    // two tangential equations become r_T + T(n.r) d = 0 (isotropic cone, force along -d).
     for (const Node &n : nodes)
       if (n.current.status == ContactStatus::slip
-          && dies[n.current.die]->friction->switches_stick_slip() && n.current.sign != 0)
+          && dies[n.current.die]->friction->switches_stick_slip()
+          && magnitude(n.current.direction) != 0.)
       {
         NodalRowTransform<dim> t;
         t.dofs = n.dofs;
         const SlipLimit limit = dies[n.current.die]->friction->slip_limit(n.current.Rn, n.area);
+        const Tensor<1, dim> d = slip_vector(n);
         for (unsigned int i = 0; i < dim; ++i)
         {
           for (unsigned int j = 0; j < dim; ++j)
-            t.matrix[i][j]
-                = (i == j ? 1. : 0.)
-                  + limit.slope * n.current.sign * n.projection.tangent[i] * n.projection.normal[j];
-          t.offset[i] = limit.intercept * n.current.sign * n.projection.tangent[i];
+            t.matrix[i][j] = (i == j ? 1. : 0.) + limit.slope * d[i] * n.projection.normal[j];
+          t.offset[i] = limit.intercept * d[i];
         }
         transforms.emplace(n.dofs[0], t);
       }
@@ -285,9 +398,11 @@ namespace ausroll::contact
     double violation = 0.;
     for (const Node &n : nodes)
     {
+      for (unsigned int c = 0; c < dim; ++c)
+        n.fixed[c] = constraints.is_constrained(n.dofs[c]);
       if (n.current.status == ContactStatus::stick)
       {
-        const Point<2> target = dies[n.current.die]->material_point(n.current.stick, time);
+        const Point<dim> target = dies[n.current.die]->material_point(n.current.stick, time);
         for (unsigned int c = 0; c < dim; ++c)
           if (!constraints.is_constrained(n.dofs[c]))
           {
@@ -297,9 +412,29 @@ namespace ausroll::contact
               violation = std::max(violation, std::abs(target[c] - n.x[c]));
           }
       }
+      else if (n.current.status == ContactStatus::slip && dim == 3)
+      {
+        // n . delta u = -gap on the free component k with the largest |n_k|:
+        // u_k = (-gap - sum_{j != k} n_j u_j) / n_k
+        const Tensor<1, dim> &normal = n.projection.normal;
+        int                   k = -1;
+        for (unsigned int c = 0; c < dim; ++c)
+          if (!constraints.is_constrained(n.dofs[c])
+              && (k < 0 || std::abs(normal[c]) > std::abs(normal[k])))
+            k = c;
+        if (k < 0 || std::abs(normal[k]) < 1e-12)
+          continue;
+        constraints.add_line(n.dofs[k]);
+        for (unsigned int j = 0; j < dim; ++j)
+          if (j != static_cast<unsigned int>(k))
+            constraints.add_entry(n.dofs[k], n.dofs[j], -normal[j] / normal[k]);
+        constraints.set_inhomogeneity(n.dofs[k], -n.projection.gap / normal[k]);
+        if (n.owned)
+          violation = std::max(violation, std::abs(n.projection.gap));
+      }
       else if (n.current.status == ContactStatus::slip)
       {
-        const Tensor<1, 2> &normal = n.projection.normal;
+        const Tensor<1, dim> &normal = n.projection.normal;
         // constrain the component with the larger normal entry that is still free
         const unsigned int first = std::abs(normal[0]) >= std::abs(normal[1]) ? 0 : 1;
         unsigned int       k = first;
@@ -329,10 +464,19 @@ namespace ausroll::contact
       if (n.current.status != ContactStatus::open || n.projection.valid)
       {
         n.current.Rn = n.R * n.projection.normal;
-        n.current.Rt = n.R * n.projection.tangent;
+        Tensor<1, dim> R_tangential = n.R;
+        if constexpr (dim == 3)
+          for (unsigned int c = 0; c < dim; ++c)
+            if (n.fixed[c])
+              R_tangential[c] = 0.;
+        for (unsigned int a = 0; a < dim - 1; ++a)
+          n.current.Rt[a] = R_tangential * n.projection.tangents[a];
       }
       else
-        n.current.Rn = n.current.Rt = 0.;
+      {
+        n.current.Rn = 0.;
+        n.current.Rt = {};
+      }
       if (n.current.status != ContactStatus::open)
         largest = std::max(largest, n.R.norm());
     }
@@ -351,15 +495,26 @@ namespace ausroll::contact
         continue;
       const FrictionLaw &friction = *dies[n.current.die]->friction;
       ContactStatus      target = n.current.status;
-      if (n.current.Rn < -force_tolerance)
+      // 3D: a sticking node whose tangential force leaves the cone slips first, even if the
+      // same (unsolved) reaction is tensile: the tension of a stick constraint dragged by a large
+      // die step is often an artefact of the drag; the next iterate decides about opening.
+      if (dim == 3 && n.current.status == ContactStatus::stick && n.current.Rn < -force_tolerance
+          && friction.switches_stick_slip()
+          && magnitude(n.current.Rt)
+                 > std::abs(friction.slip_limit(0., n.area).value(0.)) + force_tolerance)
+        target = ContactStatus::slip;
+      else if (n.current.Rn < -force_tolerance)
         target = ContactStatus::open;
       else if (n.current.status == ContactStatus::stick
-               && friction.respond(n.current.Rn, n.current.Rt, n.area, force_tolerance).slip)
+               && friction
+                      .respond(n.current.Rn,
+                               dim == 2 ? n.current.Rt[0] : magnitude(n.current.Rt),
+                               n.area,
+                               force_tolerance)
+                      .slip)
         target = ContactStatus::slip;
       else if (n.current.status == ContactStatus::slip && friction.switches_stick_slip()
-               && n.current.sign
-                          * die_coordinate_difference(n.current.die, n.projection.s, n.current.s)
-                      < -gap_tolerance)
+               && slip_along_direction(n) < -reversal_tolerance)
         target = ContactStatus::stick;
       if (target != n.current.status)
       {
@@ -405,15 +560,30 @@ namespace ausroll::contact
       return event;
     if (n.current.status == ContactStatus::stick)
     {
-      // stick -> slip: s R_t reaches the slip limit T(R_n) (s = sign of the final tangential
-      // force); f = s R_t - T(R_n) is linear in the step on one affine piece of T, else secant
-      const double    s = n.current.Rt >= 0. ? 1. : -1.;
+      // stick -> slip: s . R_t reaches the slip limit T(R_n) (s = direction of the final
+      // tangential force: 2D its sign, 3D the unit vector R_t / |R_t|); f = s . R_t - T(R_n) is
+      // linear in the step on one affine piece of T, else secant
+      std::array<double, dim - 1> s;
+      if constexpr (dim == 2)
+        s[0] = n.current.Rt[0] >= 0. ? 1. : -1.;
+      else
+      {
+        const double size = magnitude(n.current.Rt);
+        for (unsigned int a = 0; a < dim - 1; ++a)
+          s[a] = size > 0. ? n.current.Rt[a] / size : 0.;
+      }
+      double s_Rt0 = s[0] * n.committed.Rt[0], s_dRt = s[0] * (n.current.Rt[0] - n.committed.Rt[0]);
+      for (unsigned int a = 1; a < dim - 1; ++a)
+      {
+        s_Rt0 += s[a] * n.committed.Rt[a];
+        s_dRt += s[a] * (n.current.Rt[a] - n.committed.Rt[a]);
+      }
       const SlipLimit l0 = friction.slip_limit(n.committed.Rn, n.area);
       const SlipLimit l1 = friction.slip_limit(n.current.Rn, n.area);
       const double    dT = l0.slope == l1.slope ? (l1.intercept - l0.intercept) + l1.slope * dRn
                                                 : l1.value(n.current.Rn) - l0.value(n.committed.Rn);
-      const double    f0 = s * n.committed.Rt - l0.value(n.committed.Rn);
-      const double    df = s * (n.current.Rt - n.committed.Rt) - dT;
+      const double    f0 = s_Rt0 - l0.value(n.committed.Rn);
+      const double    df = s_dRt - dT;
       if (df > 0.)
       {
         const double alpha = f0 >= 0. ? 0. : -f0 / df;
@@ -421,8 +591,7 @@ namespace ausroll::contact
           event = Event{alpha, ContactStatus::slip};
       }
     }
-    else if (n.current.sign * die_coordinate_difference(n.current.die, n.projection.s, n.current.s)
-             < -gap_tolerance)
+    else if (slip_along_direction(n) < -reversal_tolerance)
       event = Event{0., ContactStatus::stick}; // slip reversal: switch at once (load factor zero)
     return event;
   }
@@ -459,16 +628,34 @@ namespace ausroll::contact
   {
     for (Node &n : nodes)
     {
+      if constexpr (dim == 3)
+        if (n.current.status == ContactStatus::slip)
+        {
+          // a slip shorter than slip_length sets the direction of the next step (applied at its
+          // first projection: the forces of this converged state keep theirs)
+          const std::array<double, dim - 1> slip = slip_increment(n);
+          const double                      size = magnitude(slip);
+          n.direction_pending = size > gap_tolerance;
+          for (unsigned int a = 0; a < dim - 1; ++a)
+            n.next_direction[a] = n.direction_pending ? slip[a] / size : 0.;
+        }
       n.committed = n.current;
       // die coordinate and gap of the converged geometry; an open node carries no force
       n.committed.s = n.projection.s;
+      n.committed.start = n.projection.local_point;
       n.committed_gap = n.projection.gap;
       n.committed_gap_valid = n.projection.valid;
       if (n.current.status == ContactStatus::open)
-        n.committed.Rn = n.committed.Rt = 0.;
+      {
+        n.committed.Rn = 0.;
+        n.committed.Rt = {};
+      }
       n.changes = 0;
       if (n.current.status == ContactStatus::slip)
+      {
         n.current.s = n.projection.s;
+        n.current.start = n.projection.local_point;
+      }
     }
   }
 
@@ -500,7 +687,10 @@ namespace ausroll::contact
       n.committed.Rn = start.Rn;
       n.committed.Rt = start.Rt;
       if (n.current.status != ContactStatus::slip)
+      {
         n.committed.s = start.s;
+        n.committed.start = start.start;
+      }
     }
   }
 
@@ -519,12 +709,12 @@ namespace ausroll::contact
   typename ContactOperator<dim>::DieContact
   ContactOperator<dim>::die_contact(const unsigned int k) const
   {
-    DieContact     result;
-    Tensor<1, dim> force;
-    const DiePose  pose = dies[k]->pose(time);
-    unsigned int   n_stick = 0, n_slip = 0;
-    double         s_min = infinity, s_max = -infinity;
-    double         x_min = infinity, x_max = -infinity; // die-frame x of closed nodes
+    DieContact         result;
+    Tensor<1, dim>     force;
+    const DiePose<dim> pose = dies[k]->pose(time);
+    unsigned int       n_stick = 0, n_slip = 0;
+    double             s_min = infinity, s_max = -infinity;
+    double             x_min = infinity, x_max = -infinity; // die-frame x of closed nodes
     for (const Node &n : nodes)
       if (n.owned && n.current.status != ContactStatus::open
           && n.current.die == static_cast<int>(k))
@@ -533,7 +723,7 @@ namespace ausroll::contact
         ++(n.current.status == ContactStatus::stick ? n_stick : n_slip);
         s_min = std::min(s_min, n.projection.s);
         s_max = std::max(s_max, n.projection.s);
-        const double x_local = pose.to_local(Point<2>(n.x[0], n.x[1]))[0];
+        const double x_local = pose.to_local(n.x)[0];
         x_min = std::min(x_min, x_local);
         x_max = std::max(x_max, x_local);
       }
@@ -555,48 +745,67 @@ namespace ausroll::contact
   {
     // Normal part from the residual; tangential part from the residual when sticking, from the
     // friction law when slipping (so that a symmetry condition on the same node does not count).
-    double tangential = n.current.Rt;
+    std::array<double, dim - 1> tangential = n.current.Rt;
     if (n.current.status == ContactStatus::slip)
     {
       const FrictionLaw &friction = *dies[n.current.die]->friction;
-      tangential
-          = friction.switches_stick_slip()
-                ? -n.current.sign * friction.slip_limit(n.current.Rn, n.area).value(n.current.Rn)
-                : 0.;
+      const double       limit = friction.switches_stick_slip()
+                                     ? friction.slip_limit(n.current.Rn, n.area).value(n.current.Rn)
+                                     : 0.;
+      for (unsigned int a = 0; a < dim - 1; ++a)
+        tangential[a] = friction.switches_stick_slip() ? -n.current.direction[a] * limit : 0.;
     }
     Tensor<1, dim> f;
     for (unsigned int d = 0; d < dim; ++d)
-      f[d] = n.current.Rn * n.projection.normal[d] + tangential * n.projection.tangent[d];
+    {
+      f[d] = n.current.Rn * n.projection.normal[d] + tangential[0] * n.projection.tangents[0][d];
+      for (unsigned int a = 1; a < dim - 1; ++a)
+        f[d] += tangential[a] * n.projection.tangents[a][d];
+    }
     return f;
   }
 
   template <int dim>
   void ContactOperator<dim>::write_csv(const std::string &filename, const MPI_Comm comm) const
   {
+    // 2D: die,s,X,Y,x,y,gap,p_n,t_t,R_n,R_t,status;
+    // 3D: die,s1,s2,X,Y,Z,x,y,z,gap,p_n,t_1,t_2,R_n,R_t1,R_t2,status (t_a, R_ta along the
+    // die tangents)
     std::vector<std::vector<double>> rows;
     for (const Node &n : nodes)
       if (n.owned && n.current.die >= 0 && n.projection.valid)
-        rows.push_back(
-            {double(n.current.die),
-             n.projection.s,
-             n.X[0],
-             n.X[1],
-             n.x[0],
-             n.x[1],
-             n.projection.gap,
-             n.area > area_floor ? n.current.Rn / n.area : 0.,
-             n.area > area_floor ? (contact_force(n) * n.projection.tangent) / n.area : 0.,
-             n.current.Rn,
-             contact_force(n) * n.projection.tangent,
-             double(static_cast<int>(n.current.status))});
+      {
+        const Tensor<1, dim> f = contact_force(n);
+        std::vector<double>  row{double(n.current.die)};
+        for (unsigned int a = 0; a < dim - 1; ++a)
+          row.push_back(n.projection.coordinates[a]);
+        for (unsigned int d = 0; d < dim; ++d)
+          row.push_back(n.X[d]);
+        for (unsigned int d = 0; d < dim; ++d)
+          row.push_back(n.x[d]);
+        row.push_back(n.projection.gap);
+        row.push_back(n.area > area_floor ? n.current.Rn / n.area : 0.);
+        for (unsigned int a = 0; a < dim - 1; ++a)
+          row.push_back(n.area > area_floor ? (f * n.projection.tangents[a]) / n.area : 0.);
+        row.push_back(n.current.Rn);
+        for (unsigned int a = 0; a < dim - 1; ++a)
+          row.push_back(f * n.projection.tangents[a]);
+        row.push_back(double(static_cast<int>(n.current.status)));
+        rows.push_back(row);
+      }
     const std::vector<std::vector<double>> all = gather_sorted_rows(comm, rows);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     std::ofstream out(filename);
-    out << "# time = " << time
-        << "; status: 0 open, 1 stick, 2 slip; p_n, t_t in MPa, R_n, R_t in N\n"
-        << "die,s,X,Y,x,y,gap,p_n,t_t,R_n,R_t,status\n"
-        << std::setprecision(10);
+    out << "# time = " << time;
+    if constexpr (dim == 2)
+      out << "; status: 0 open, 1 stick, 2 slip; p_n, t_t in MPa, R_n, R_t in N\n"
+          << "die,s,X,Y,x,y,gap,p_n,t_t,R_n,R_t,status\n";
+    else
+      out << "; status: 0 open, 1 stick, 2 slip; p_n, t_1, t_2 in MPa, R_n, R_t1, R_t2 in N "
+             "(along the die tangents)\n"
+          << "die,s1,s2,X,Y,Z,x,y,z,gap,p_n,t_1,t_2,R_n,R_t1,R_t2,status\n";
+    out << std::setprecision(10);
     for (const auto &row : all)
     {
       out << dies[static_cast<unsigned int>(row[0])]->name;
@@ -619,9 +828,11 @@ namespace ausroll::contact
         {
           pressure_traction[n.dofs[0]]
               = n.current.status == ContactStatus::open ? 0. : n.current.Rn / n.area;
-          pressure_traction[n.dofs[1]] = n.current.status == ContactStatus::open
-                                             ? 0.
-                                             : (contact_force(n) * n.projection.tangent) / n.area;
+          for (unsigned int a = 0; a < dim - 1; ++a)
+            pressure_traction[n.dofs[a + 1]]
+                = n.current.status == ContactStatus::open
+                      ? 0.
+                      : (contact_force(n) * n.projection.tangents[a]) / n.area;
         }
         status_gap[n.dofs[0]] = static_cast<int>(n.current.status);
         status_gap[n.dofs[1]] = n.projection.gap;
@@ -655,8 +866,11 @@ namespace ausroll::contact
 
   namespace
   {
-    constexpr unsigned int packed_node_size = 13;
-  }
+    /** Doubles per node in pack_state(): 13 in 2D (the layout of the checkpoints so far), 3D
+        with the slip start point. */
+    template <int dim>
+    constexpr unsigned int packed_node_size = 2 * dim + 2 * (dim - 1) + 7 + (dim == 3 ? dim : 0);
+  } // namespace
 
   template <int dim>
   std::vector<double> ContactOperator<dim>::pack_state() const
@@ -664,20 +878,26 @@ namespace ausroll::contact
     std::vector<double> local;
     for (const Node &n : nodes)
       if (n.owned && n.committed.status != ContactStatus::open)
-        local.insert(local.end(),
-                     {n.X[0],
-                      n.X[1],
-                      double(static_cast<int>(n.committed.status)),
-                      double(n.committed.die),
-                      n.committed.stick[0],
-                      n.committed.stick[1],
-                      double(n.committed.sign),
-                      n.committed.s,
-                      n.committed_gap,
-                      n.committed_gap_valid ? 1. : 0.,
-                      n.committed.Rn,
-                      n.committed.Rt,
-                      n.current.s});
+      {
+        // 2D: X, Y, status, die, stick x, y, sign, s, gap, gap valid, R_n, R_t, current s
+        for (unsigned int d = 0; d < dim; ++d)
+          local.push_back(n.X[d]);
+        local.push_back(double(static_cast<int>(n.committed.status)));
+        local.push_back(double(n.committed.die));
+        for (unsigned int d = 0; d < dim; ++d)
+          local.push_back(n.committed.stick[d]);
+        for (unsigned int a = 0; a < dim - 1; ++a)
+          local.push_back(n.committed.direction[a]);
+        local.insert(
+            local.end(),
+            {n.committed.s, n.committed_gap, n.committed_gap_valid ? 1. : 0., n.committed.Rn});
+        for (unsigned int a = 0; a < dim - 1; ++a)
+          local.push_back(n.committed.Rt[a]);
+        local.push_back(n.current.s);
+        if constexpr (dim == 3)
+          for (unsigned int d = 0; d < dim; ++d)
+            local.push_back(n.current.start[d]);
+      }
     std::vector<double> all;
     for (const auto &part : Utilities::MPI::all_gather(comm, local))
       all.insert(all.end(), part.begin(), part.end());
@@ -688,28 +908,42 @@ namespace ausroll::contact
   void ContactOperator<dim>::unpack_state(const std::vector<double> &state)
   {
     // Saved nodes by position (rounded to a tolerance grid).
-    const double scale = std::max(gap_tolerance * 1e3, 1e-12);
-    std::map<std::pair<long long, long long>, const double *> saved;
-    for (std::size_t k = 0; k + packed_node_size <= state.size(); k += packed_node_size)
-      saved[{std::llround(state[k] / scale), std::llround(state[k + 1] / scale)}] = &state[k];
+    const double           scale = std::max(gap_tolerance * 1e3, 1e-12);
+    constexpr unsigned int size = packed_node_size<dim>;
+    std::map<std::array<long long, dim>, const double *> saved;
+    const auto                                           key = [scale](const auto &x)
+    {
+      std::array<long long, dim> k;
+      for (unsigned int d = 0; d < dim; ++d)
+        k[d] = std::llround(x[d] / scale);
+      return k;
+    };
+    for (std::size_t k = 0; k + size <= state.size(); k += size)
+      saved[key(&state[k])] = &state[k];
 
     for (Node &n : nodes)
     {
-      const auto it = saved.find({std::llround(n.X[0] / scale), std::llround(n.X[1] / scale)});
+      const auto it = saved.find(key(n.X));
       if (it == saved.end())
         continue;
-      const double *d = it->second;
-      n.committed.status = static_cast<ContactStatus>(static_cast<int>(d[2]));
-      n.committed.die = static_cast<int>(d[3]);
-      n.committed.stick = Point<2>(d[4], d[5]);
-      n.committed.sign = static_cast<int>(d[6]);
-      n.committed.s = d[7];
-      n.committed_gap = d[8];
-      n.committed_gap_valid = d[9] != 0.;
-      n.committed.Rn = d[10];
-      n.committed.Rt = d[11];
+      const double *d = it->second + dim;
+      n.committed.status = static_cast<ContactStatus>(static_cast<int>(*d++));
+      n.committed.die = static_cast<int>(*d++);
+      for (unsigned int c = 0; c < dim; ++c)
+        n.committed.stick[c] = *d++;
+      for (unsigned int a = 0; a < dim - 1; ++a)
+        n.committed.direction[a] = *d++;
+      n.committed.s = *d++;
+      n.committed_gap = *d++;
+      n.committed_gap_valid = *d++ != 0.;
+      n.committed.Rn = *d++;
+      for (unsigned int a = 0; a < dim - 1; ++a)
+        n.committed.Rt[a] = *d++;
       n.current = n.committed;
-      n.current.s = d[12];
+      n.current.s = *d++;
+      if constexpr (dim == 3)
+        for (unsigned int c = 0; c < dim; ++c)
+          n.current.start[c] = *d++;
       n.changes = 0;
     }
     build_row_transforms();
@@ -719,13 +953,8 @@ namespace ausroll::contact
   double ContactOperator<dim>::distance_to_dies(const Point<dim> &x, const double t) const
   {
     double distance = infinity;
-    for (const auto &die : dies)
-    {
-      // no search-distance limit here: adaptivity looks at the whole workpiece
-      const Projection p = die->die_surface().project(die->pose(t).to_local(to_2d(x)));
-      if (p.valid)
-        distance = std::min(distance, std::abs(p.gap));
-    }
+    for (unsigned int k = 0; k < dies.size(); ++k)
+      distance = std::min(distance, std::abs(unlimited_gap(k, x, t)));
     return distance;
   }
 
@@ -738,25 +967,23 @@ namespace ausroll::contact
       const std::string   path = "Contact/Die " + std::to_string(k) + " (" + dies[k]->name + ")";
       unsigned int        n_candidates = 0;
       double              deepest = infinity, nearest = infinity;
-      Point<2>            deepest_node;
+      Point<dim>          deepest_node;
       std::vector<double> nearest_at(times.size(), infinity); // over the nodes, per time
       for (const Node &n : nodes)
         if (n.owned && std::find(n.dies.begin(), n.dies.end(), k) != n.dies.end())
         {
           ++n_candidates;
-          const Projection p0
-              = dies[k]->die_surface().project(dies[k]->pose(times.front()).to_local(to_2d(n.X)));
-          if (p0.gap < deepest)
+          const double g0 = unlimited_gap(k, n.X, times.front());
+          if (g0 < deepest)
           {
-            deepest = p0.gap;
-            deepest_node = to_2d(n.X);
+            deepest = g0;
+            deepest_node = n.X;
           }
           for (unsigned int i = 0; i < times.size(); ++i)
           {
-            const Projection p
-                = dies[k]->die_surface().project(dies[k]->pose(times[i]).to_local(to_2d(n.X)));
-            nearest = std::min(nearest, p.gap);
-            nearest_at[i] = std::min(nearest_at[i], p.gap);
+            const double g = unlimited_gap(k, n.X, times[i]);
+            nearest = std::min(nearest, g);
+            nearest_at[i] = std::min(nearest_at[i], g);
           }
         }
       if (Utilities::MPI::sum(n_candidates, comm) == 0)
@@ -794,4 +1021,5 @@ namespace ausroll::contact
   }
 
   template class ContactOperator<2>;
+  template class ContactOperator<3>;
 } // namespace ausroll::contact

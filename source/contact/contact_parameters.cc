@@ -8,6 +8,15 @@ namespace ausroll::contact
 {
   using namespace dealii;
 
+  bool is_3d_shape(const std::string &shape)
+  {
+    for (const std::string &name :
+         split_and_trim(surfaces::Surface3DParameters::shape_names(), '|'))
+      if (name == shape)
+        return true;
+    return false;
+  }
+
   void ContactParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
@@ -46,9 +55,12 @@ namespace ausroll::contact
                         "Label in history.csv (die_<Name>_force_x, ...).");
       prm.declare_entry("Shape",
                         "flat",
-                        Patterns::Selection(surfaces::shape_selection()),
+                        Patterns::Selection(surfaces::shape_selection() + "|"
+                                            + surfaces::Surface3DParameters::shape_names()),
                         "Die surface, described in die coordinates in the subsection of the same "
-                        "name (Flat, Circle, ...); the Motion places it.");
+                        "name (Flat, Circle, ...); the Motion places it. 2D runs: "
+                            + surfaces::shape_selection()
+                            + "; 3D runs: " + surfaces::Surface3DParameters::shape_names() + ".");
       prm.declare_entry(
           "Friction",
           "Coulomb",
@@ -77,6 +89,7 @@ namespace ausroll::contact
           Patterns::Double(0.),
           "Nodes farther than this from the die are not projected (mm; 0: no limit).");
       surfaces::declare_shape_parameters(prm);
+      surfaces::Surface3DParameters::declare_parameters(prm);
 
       prm.enter_subsection("Motion");
       prm.declare_entry("Type",
@@ -87,18 +100,31 @@ namespace ausroll::contact
       prm.declare_entry("Translation",
                         "0; 0",
                         Patterns::Anything(),
-                        "prescribed: displacement of the pivot 'ux(t); uy(t)' (mm).");
+                        "prescribed: displacement of the pivot 'ux(t); uy(t)' (3D: "
+                        "'ux(t); uy(t); uz(t)') (mm).");
       prm.declare_entry(
           "Rotation",
           "0",
           Patterns::Anything(),
-          "prescribed: rotation angle phi(t) about the pivot (degrees, counter-clockwise).");
+          "prescribed: rotation angle phi(t) about the pivot (degrees, counter-clockwise; 3D: "
+          "about Axis through the pivot, right-hand rule).");
       prm.declare_entry(
-          "Pivot", "0, 0", Patterns::Anything(), "prescribed: rotation centre in die coordinates.");
+          "Pivot",
+          "0, 0",
+          Patterns::Anything(),
+          "prescribed: rotation centre in die coordinates (3D: x, y, z; x, y means z = 0).");
+      prm.declare_entry("Axis",
+                        "0, 0, 1",
+                        Patterns::Anything(),
+                        "3D only: axis of the prescribed Rotation; rolling: direction of the "
+                        "workpiece axis through Workpiece center (the die axis is parallel), "
+                        "angles measured in the plane orthogonal to it from x (Axis = z) or "
+                        "from the coordinate axis least aligned with it.");
       prm.declare_entry("Workpiece center",
                         "0, 0",
                         Patterns::Anything(),
-                        "rolling: centre O_G of the (non-rotating) workpiece.");
+                        "rolling: centre O_G of the (non-rotating) workpiece (3D: a point of its "
+                        "axis, x, y, z; x, y means z = 0).");
       prm.declare_entry("Workpiece rolling radius",
                         "1",
                         Patterns::Double(0.),
@@ -169,8 +195,18 @@ namespace ausroll::contact
               path + "Name",
               "must be a single word");
       d.shape = prm.get("Shape");
-      d.surface_path = surfaces::shape_path(d.shape, path);
-      d.surface = surfaces::parse_shape_parameters(d.shape, prm, path, input_directory);
+      if (is_3d_shape(d.shape))
+      {
+        auto surface_3d = std::make_shared<surfaces::Surface3DParameters>();
+        surface_3d->parse_parameters(prm, path, input_directory);
+        d.surface_3d = surface_3d;
+        d.surface_path = path;
+      }
+      else
+      {
+        d.surface_path = surfaces::shape_path(d.shape, path);
+        d.surface = surfaces::parse_shape_parameters(d.shape, prm, path, input_directory);
+      }
       const std::string friction = prm.get("Friction");
       d.friction = friction == "frictionless" ? FrictionLawType::frictionless
                    : friction == "Coulomb"    ? FrictionLawType::coulomb
@@ -196,9 +232,9 @@ namespace ausroll::contact
                                           : MotionType::rolling;
       d.translation = prm.get("Translation");
       d.rotation = prm.get("Rotation");
-      d.pivot = parse_point<2>(prm.get("Pivot"), path + "Motion/Pivot");
-      d.workpiece_center
-          = parse_point<2>(prm.get("Workpiece center"), path + "Motion/Workpiece center");
+      d.pivot = prm.get("Pivot");
+      d.workpiece_center = prm.get("Workpiece center");
+      d.axis = prm.get("Axis");
       d.workpiece_radius = prm.get_double("Workpiece rolling radius");
       d.die_radius = prm.get_double("Die rolling radius");
       d.center_distance = prm.get_double("Initial center distance");

@@ -58,31 +58,67 @@ namespace ausroll::contact
       return f;
     }
 
-    std::unique_ptr<DieMotion> make_motion(const DieParameters &p, const std::string &path)
+    /** Read the point entry @p text of @p dim coordinates (3D also "x, y": z = 0, so that the
+        2D defaults serve); InputError naming @p entry. */
+    template <int dim>
+    Point<dim> read_point(const std::string &text, const std::string &entry)
     {
+      if constexpr (dim == 3)
+        if (split_and_trim(text, ',').size() == 2)
+        {
+          const Point<2> p = parse_point<2>(text, entry);
+          return Point<3>(p[0], p[1], 0.);
+        }
+      return parse_point<dim>(text, entry);
+    }
+
+    template <int dim>
+    std::unique_ptr<DieMotion<dim>> make_motion(const DieParameters &p, const std::string &path)
+    {
+      Tensor<1, dim> axis;
+      if constexpr (dim == 3)
+      {
+        if (p.motion != MotionType::fixed)
+        {
+          axis = Tensor<1, 3>(read_point<3>(p.axis, path + "Motion/Axis"));
+          require(axis.norm() > 0., path + "Motion/Axis", "must be a nonzero vector");
+        }
+      }
       switch (p.motion)
       {
         case MotionType::fixed:
-          return std::make_unique<FixedPose>();
+          return std::make_unique<FixedPose<dim>>();
         case MotionType::prescribed:
         {
           const std::vector<std::string> u = split_and_trim(p.translation, ';');
-          require(
-              u.size() == 2, path + "Motion/Translation", "needs two expressions 'ux(t); uy(t)'");
-          const TimeFunction ux = time_function(u[0], path + "Motion/Translation");
-          const TimeFunction uy = time_function(u[1], path + "Motion/Translation");
+          require(u.size() == dim,
+                  path + "Motion/Translation",
+                  dim == 2 ? "needs two expressions 'ux(t); uy(t)'"
+                           : "needs three expressions 'ux(t); uy(t); uz(t)' in a 3D run");
+          std::vector<TimeFunction> components;
+          for (unsigned int c = 0; c < dim; ++c)
+            components.push_back(time_function(u[c], path + "Motion/Translation"));
           const TimeFunction phi = time_function(p.rotation, path + "Motion/Rotation", degree);
-          return std::make_unique<PrescribedMotion>(
-              [ux, uy](const double t) {
-                return Tensor<1, 2>({ux(t), uy(t)});
+          const Point<dim>   pivot = read_point<dim>(p.pivot, path + "Motion/Pivot");
+          return std::make_unique<PrescribedMotion<dim>>(
+              [components](const double t)
+              {
+                Tensor<1, dim> v;
+                for (unsigned int c = 0; c < dim; ++c)
+                  v[c] = components[c](t);
+                return v;
               },
               phi,
-              p.pivot);
+              pivot,
+              pivot,
+              axis);
         }
         case MotionType::rolling:
         {
-          RollingMotion::Data data;
-          data.workpiece_center = p.workpiece_center;
+          typename RollingMotion<dim>::Data data;
+          data.workpiece_center
+              = read_point<dim>(p.workpiece_center, path + "Motion/Workpiece center");
+          data.axis = axis;
           data.workpiece_radius = p.workpiece_radius;
           data.die_radius = p.die_radius;
           if (p.center_distance > 0.)
@@ -96,7 +132,7 @@ namespace ausroll::contact
           data.feed = time_function(p.feed, path + "Motion/Feed");
           try
           {
-            return std::make_unique<RollingMotion>(data);
+            return std::make_unique<RollingMotion<dim>>(data);
           }
           catch (const std::exception &e)
           {
@@ -106,20 +142,49 @@ namespace ausroll::contact
       }
       return nullptr;
     }
+
+    /** The surface of die @p p in a run of dimension @p dim; InputError naming `Shape` if the
+        shape has the other dimension. */
+    template <int dim>
+    std::unique_ptr<const RigidSurface<dim>> make_surface(const DieParameters &p,
+                                                          const std::string   &path)
+    {
+      if constexpr (dim == 2)
+      {
+        require(p.surface != nullptr,
+                path + "Shape",
+                "'" + p.shape + "' is a 3D die shape; a 2D run needs one of "
+                    + surfaces::shape_selection());
+        return p.surface->create(p.surface_path);
+      }
+      else
+      {
+        require(p.surface_3d != nullptr,
+                path + "Shape",
+                "'" + p.shape + "' is a 2D die shape; a 3D run needs one of "
+                    + surfaces::Surface3DParameters::shape_names());
+        return p.surface_3d->create(p.shape);
+      }
+    }
   } // namespace
 
-  RigidDie::RigidDie(const DieParameters &p, const unsigned int index)
+  template <int dim>
+  RigidDie<dim>::RigidDie(const DieParameters &p, const unsigned int index)
       : name(p.name)
       , friction(create_friction_law(p))
       , search_distance(p.search_distance > 0. ? p.search_distance
                                                : std::numeric_limits<double>::infinity())
-      , shape(p.surface ? p.surface->create(p.surface_path)
-                        : throw std::logic_error("RigidDie: DieParameters without a shape"))
-      , profile(*shape)
+      , shape(make_surface<dim>(p, "Contact/Die " + std::to_string(index) + "/"))
       , candidates(p.candidate_boundaries.begin(), p.candidate_boundaries.end())
   {
     const std::string path = "Contact/Die " + std::to_string(index) + "/";
-    motion = make_motion(p, path);
+    if constexpr (dim == 2)
+    {
+      profile = std::make_unique<DieProfile>(*shape);
+      read_point<2>(p.pivot, path + "Motion/Pivot"); // checked in every 2D run, as before
+      read_point<2>(p.workpiece_center, path + "Motion/Workpiece center");
+    }
+    motion = make_motion<dim>(p, path);
   }
 
   Projection DieProfile::project(const Point<2> &x, const double max_distance) const
@@ -143,11 +208,12 @@ namespace ausroll::contact
     return p;
   }
 
-  DieProjection RigidDie::project(const Point<2> &x, const double t) const
+  template <int dim>
+  DieProjection<dim> RigidDie<dim>::project(const Point<dim> &x, const double t) const
   {
-    const DiePose              pose = motion->pose(t);
-    const SurfaceProjection<2> p = shape->project(pose.to_local(x), search_distance);
-    DieProjection              result;
+    const DiePose<dim>           pose = motion->pose(t);
+    const SurfaceProjection<dim> p = shape->project(pose.to_local(x), search_distance);
+    DieProjection<dim>           result;
     if (!p.valid)
       return result;
     result.valid = true;
@@ -155,13 +221,20 @@ namespace ausroll::contact
     result.local_point = p.point;
     result.point = pose.to_global(p.point);
     result.normal = pose.rotate_vector_to_global(p.normal);
-    result.tangent = pose.rotate_vector_to_global(p.tangents[0]);
+    for (unsigned int a = 0; a < dim - 1; ++a)
+      result.tangents[a] = pose.rotate_vector_to_global(p.tangents[a]);
+    result.tangent = result.tangents[0];
+    result.coordinates = p.coordinates;
     result.s = p.coordinates[0];
     return result;
   }
 
-  Point<2> RigidDie::material_point(const Point<2> &X, const double t) const
+  template <int dim>
+  Point<dim> RigidDie<dim>::material_point(const Point<dim> &X, const double t) const
   {
     return motion->pose(t).to_global(X);
   }
+
+  template class RigidDie<2>;
+  template class RigidDie<3>;
 } // namespace ausroll::contact

@@ -12,12 +12,12 @@
 
 #include <cmath>
 
-using ausroll::contact::DieMotion;
-using ausroll::contact::DiePose;
+using DieMotion = ausroll::contact::DieMotion<2>;
+using DiePose = ausroll::contact::DiePose<2>;
 using ausroll::contact::DieSurface;
-using ausroll::contact::FixedPose;
-using ausroll::contact::PrescribedMotion;
-using ausroll::contact::RollingMotion;
+using FixedPose = ausroll::contact::FixedPose<2>;
+using PrescribedMotion = ausroll::contact::PrescribedMotion<2>;
+using RollingMotion = ausroll::contact::RollingMotion<2>;
 using dealii::Point;
 using dealii::Tensor;
 

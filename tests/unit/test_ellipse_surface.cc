@@ -272,7 +272,7 @@ TEST(EllipseSurface, FromItsParameterSubsection)
   p.parse_parameters(prm, "");
   ASSERT_EQ(p.dies.size(), 1u);
   EXPECT_EQ(p.dies[0].surface_path, "Contact/Die 0/Ellipse/");
-  const ausroll::contact::RigidDie die(p.dies[0], 0);
+  const ausroll::contact::RigidDie<2> die(p.dies[0], 0);
   EXPECT_EQ(die.surface().name(), "ellipse");
   // the a axis along +y: the top vertex (1, 5), curvature a / b^2 = 3
   const SurfaceProjection<2> top = die.surface().project(Point<2>(1., 6.));

@@ -30,7 +30,7 @@ namespace ausroll::contact
   enum class ContactStatus
   {
     open = 0,  ///< no constraint
-    stick = 1, ///< both displacement components follow the die point where the node stuck
+    stick = 1, ///< all displacement components follow the die point where the node stuck
     slip = 2   ///< normal gap zero, tangential force of the friction law opposing the slip
   };
 
@@ -139,7 +139,7 @@ namespace ausroll::contact
     unsigned int n_dies() const { return dies.size(); }
 
     /** Die @p k (name, pose, motion, friction law). */
-    const RigidDie &die(const unsigned int k) const { return *dies[k]; }
+    const RigidDie<dim> &die(const unsigned int k) const { return *dies[k]; }
 
     /** The contact of one die at the current state, over all ranks (io::postprocess::DieForces
         makes the history columns of it). */
@@ -238,14 +238,24 @@ namespace ausroll::contact
      */
     struct NodeState
     {
-      ContactStatus    status = ContactStatus::open;
-      int              die = -1; ///< die in contact, or closest die (-1: none in range)
-      dealii::Point<2> stick;    ///< die point of a sticking node (die coordinates)
-      int              sign = 0; ///< slip direction along the die tangent (+1/-1)
-      double           s = 0.;   ///< die coordinate: committed, at the converged geometry;
-                                 ///< current, where the current slip started
-      double Rn = 0.;            ///< normal contact force (compression positive)
-      double Rt = 0.;            ///< tangential contact force
+      ContactStatus      status = ContactStatus::open;
+      int                die = -1; ///< die in contact, or closest die (-1: none in range)
+      dealii::Point<dim> stick;    ///< die point of a sticking node (die coordinates)
+      /**
+       * Slip direction d of a slipping node (unit, components along the die tangents t_a; the
+       * friction force is -T(R_n) d): 2D +1/-1 along the die tangent; 3D any direction of the
+       * tangent plane (isotropic friction cone). Zero if unknown.
+       */
+      std::array<double, dim - 1> direction{};
+
+      double s = 0.; ///< die coordinate (2D arc length, 3D the first
+                     ///< surface coordinate): committed, at the converged
+                     ///< geometry; current, where the current slip started
+      /** 3D: die point (die coordinates) where the current slip started (committed: of the
+          converged geometry). */
+      dealii::Point<dim>          start;
+      double                      Rn = 0.; ///< normal contact force (compression positive)
+      std::array<double, dim - 1> Rt{};    ///< tangential contact force, components along t_a
     };
 
     struct Node
@@ -262,10 +272,17 @@ namespace ausroll::contact
       bool      committed_gap_valid = false; ///< the node was within a die's search distance
 
       // geometry and forces of the current iterate
-      DieProjection          projection;  ///< projection on die `current.die`
+      DieProjection<dim>     projection;  ///< projection on die `current.die`
       dealii::Point<dim>     x;           ///< current position
       dealii::Tensor<1, dim> R;           ///< nodal contact force (residual)
       unsigned int           changes = 0; ///< status changes in the current step
+      /** Components already constrained (Dirichlet, symmetry) when the contact constraints were
+          added: 3D leaves their residual out of the tangential force (a symmetry-plane reaction
+          is no friction). */
+      mutable std::array<bool, dim> fixed{};
+      /** 3D: the slip direction of the last converged step, taken at the next projection. */
+      std::array<double, dim - 1> next_direction{};
+      bool                        direction_pending = false;
       bool fresh = false; ///< status changed at the current iterate (reaction not yet meaningful)
     };
 
@@ -289,6 +306,28 @@ namespace ausroll::contact
     /** Switch node @p n to @p status at the current iterate. */
     void switch_status(Node &n, const ContactStatus status);
 
+    /**
+     * Slip of node @p n since its current slip started, along its slip direction (2D: the signed
+     * arc length sign (s - s_start); 3D: d . the tangential part of the die-frame displacement of
+     * the projection). Negative: the slip has reversed.
+     */
+    double slip_along_direction(const Node &n) const;
+
+    /** 3D: the tangential components (along the current tangents) of the slip of node @p n since
+        its current slip started (die-relative, rotated to the global frame). */
+    std::array<double, dim - 1> slip_increment(const Node &n) const;
+
+    /** 3D: d = the direction of the slip of node @p n since its current slip started, if that
+        slip is longer than slip_length. */
+    void update_slip_direction(Node &n) const;
+
+    /** The slip direction vector d = sum_a d_a t_a of node @p n (global). */
+    dealii::Tensor<1, dim> slip_vector(const Node &n) const;
+
+    /** Gap of the global point @p x to die @p k at time @p t without search distance (infinite
+        if the die surface does not answer). */
+    double unlimited_gap(const unsigned int k, const dealii::Point<dim> &x, const double t) const;
+
     /** Signed difference s1 - s0 on die @p die (wrapped on closed dies). */
     double
     die_coordinate_difference(const unsigned int die, const double s1, const double s0) const;
@@ -296,14 +335,19 @@ namespace ausroll::contact
     /** Rebuild the friction row transforms from the current statuses. */
     void build_row_transforms();
 
-    ContactParameters                      parameters;
-    std::vector<std::unique_ptr<RigidDie>> dies;
-    std::vector<Node>                      nodes;
-    RowTransforms<dim>                     transforms;
-    MPI_Comm                               comm = MPI_COMM_WORLD;
-    double                                 time = 0.;
-    double                                 gap_tolerance = 1e-10;
-    double                                 force_tolerance = 0.;
+    ContactParameters                           parameters;
+    std::vector<std::unique_ptr<RigidDie<dim>>> dies;
+    std::vector<Node>                           nodes;
+    RowTransforms<dim>                          transforms;
+    MPI_Comm                                    comm = MPI_COMM_WORLD;
+    double                                      time = 0.;
+    double                                      gap_tolerance = 1e-10;
+    /** 3D: slips over a step longer than this (1e-2 of the length scale) set the slip direction
+        at every iterate; shorter ones keep it (update_slip_direction()). */
+    double slip_length = 1e-8;
+    /** Slip against the slip direction beyond this is a reversal (the node sticks). */
+    double reversal_tolerance = 1e-10;
+    double force_tolerance = 0.;
     double area_floor = 0.;      ///< tributary areas below this are zero (nodes on the axis)
     bool   hold_changed = false; ///< hold_changed_nodes()
   };

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <ausroll/contact/surfaces/surface_factory.h>
+#include <ausroll/contact/surfaces/surface_factory_3d.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
@@ -44,6 +45,9 @@ namespace ausroll::contact
     rolling     ///< planetary rolling about the workpiece centre (NOFEAP section 4.1)
   };
 
+  /** True if @p shape (a `Shape` value) names a 3D die shape. */
+  bool is_3d_shape(const std::string &shape);
+
   /** One `Contact/Die N` subsection. */
   struct DieParameters
   {
@@ -57,29 +61,39 @@ namespace ausroll::contact
     std::vector<unsigned int> candidate_boundaries; ///< `Candidate boundaries` of the workpiece
     double                    search_distance = 0.; ///< `Search distance` (0: unlimited)
 
-    /** `Shape`: the name of a 2D shape (contact/surfaces/surface_factory.h). */
+    /** `Shape`: the name of a 2D shape (contact/surfaces/surface_factory.h) or of a 3D shape
+        (surfaces::Surface3DParameters::shape_names()); RigidDie<dim> checks the dimension. */
     std::string shape = "flat";
-    /** The entries of the shape's own subsection `Contact/Die N/<Shape>` (die-local
-        coordinates, at t = 0 when the motion is the identity); set by parse_parameters(). */
+    /** The entries of a 2D shape's own subsection `Contact/Die N/<Shape>` (die-local
+        coordinates, at t = 0 when the motion is the identity); set by parse_parameters(); null
+        for a 3D shape. */
     std::shared_ptr<const surfaces::ShapeParameters> surface;
+    /** The 3D shape subsections (`Plane`, `Cylinder`, ...) when `Shape` names a 3D shape, else
+        null. */
+    std::shared_ptr<const surfaces::Surface3DParameters> surface_3d;
     /** Full path of that subsection ("Contact/Die 0/Circle/") for error messages. */
     std::string surface_path;
 
     // motion
-    MotionType       motion = MotionType::fixed; ///< `Motion/Type`
-    std::string      translation = "0; 0";       ///< `Motion/Translation` u(t) (mm)
-    std::string      rotation = "0";             ///< `Motion/Rotation` phi(t) (degrees)
-    dealii::Point<2> pivot{0., 0.};              ///< `Motion/Pivot` (die-local rotation centre)
-    dealii::Point<2> workpiece_center{0., 0.};   ///< rolling: `Workpiece center`
-    double           workpiece_radius = 1.;      ///< rolling: `Workpiece rolling radius` R_G
-    double           die_radius = 1.;            ///< rolling: `Die rolling radius` R_D
-    double           center_distance = 0.; ///< rolling: `Initial center distance` (0: R_G + R_D)
-    double           line_angle = 90.;     ///< rolling: `Initial line angle` (degrees)
-    int              direction = 1;        ///< rolling: `Direction` (+1 counter-clockwise, -1)
-    double           beta = 1.;            ///< rolling: `Rolling factor` beta (1 pure rolling)
-    std::string      revolution = "0";     ///< rolling: `Revolution angle` theta_G(t) (degrees)
-    std::string      slip = "0";           ///< rolling: `Slip angle` theta_s(t) (degrees)
-    std::string      feed = "0";           ///< rolling: `Feed` f(t) (mm)
+    MotionType  motion = MotionType::fixed; ///< `Motion/Type`
+    std::string translation = "0; 0";       ///< `Motion/Translation` u(t) (mm)
+    std::string rotation = "0";             ///< `Motion/Rotation` phi(t) (degrees)
+    /** `Motion/Pivot` (die-local rotation centre; dim coordinates, read by RigidDie<dim>). */
+    std::string pivot = "0, 0";
+    /** rolling: `Workpiece center` (dim coordinates, read by RigidDie<dim>). */
+    std::string workpiece_center = "0, 0";
+    /** 3D: `Motion/Axis`, the rotation axis of Rotation and the workpiece (and die) axis of
+        rolling. */
+    std::string axis = "0, 0, 1";
+    double      workpiece_radius = 1.; ///< rolling: `Workpiece rolling radius` R_G
+    double      die_radius = 1.;       ///< rolling: `Die rolling radius` R_D
+    double      center_distance = 0.;  ///< rolling: `Initial center distance` (0: R_G + R_D)
+    double      line_angle = 90.;      ///< rolling: `Initial line angle` (degrees)
+    int         direction = 1;         ///< rolling: `Direction` (+1 counter-clockwise, -1)
+    double      beta = 1.;             ///< rolling: `Rolling factor` beta (1 pure rolling)
+    std::string revolution = "0";      ///< rolling: `Revolution angle` theta_G(t) (degrees)
+    std::string slip = "0";            ///< rolling: `Slip angle` theta_s(t) (degrees)
+    std::string feed = "0";            ///< rolling: `Feed` f(t) (mm)
   };
 
   /** Parameters of subsection `Contact`. */

@@ -1,16 +1,21 @@
 /**
  * @file die_motion.h
- * Rigid motion of a die: the pose (rotation + translation) of the die's local frame at time t.
+ * Rigid motion of a die: the pose (rotation + translation) of the die's local frame at time t,
+ * in 2D and 3D (DiePose<dim>, DieMotion<dim>).
  *
- * Pose convention (2D, angles in radians, counter-clockwise positive):
+ * Pose convention (angles in radians, counter-clockwise positive about the axis):
  *
  *     x = c + R(theta) (X - X_ref),      X = X_ref + R(-theta) (x - c),
  *
- * with X a point in the die's LOCAL frame (where DieSurface is described), x the same material
- * point in the GLOBAL frame, X_ref the die's reference point in local coordinates (e.g. the roll
- * centre; the local origin by default), c the global position of the reference point and
- * R(theta) = [[cos, -sin], [sin, cos]]. Directions (normals, tangents) transform with R(theta)
- * alone. The velocity of a die-fixed point is dc/dt + dtheta/dt k x (x - c).
+ * with X a point in the die's LOCAL frame (where the RigidSurface is described), x the same
+ * material point in the GLOBAL frame, X_ref the die's reference point in local coordinates (e.g.
+ * the roll centre; the local origin by default), c the global position of the reference point.
+ * - 2D: R(theta) = [[cos, -sin], [sin, cos]] (rotation about the out-of-plane axis k).
+ * - 3D: R(theta) the rotation by theta about the unit axis a (right-hand rule; Rodrigues:
+ *   R = cos I + sin [a]x + (1 - cos) a (x) a); a = e_z by default, so that a 3D pose with
+ *   a = e_z acts on (x, y) as the 2D pose and leaves z unchanged.
+ * Directions (normals, tangents) transform with R(theta) alone. The velocity of a die-fixed point
+ * is dc/dt + dtheta/dt a x (x - c) (a = k in 2D).
  */
 #pragma once
 
@@ -27,12 +32,19 @@ namespace ausroll::contact
   using TimeFunction = std::function<double(double)>;
 
   /** A vector-valued function of time (a displacement). */
-  using VectorTimeFunction = std::function<dealii::Tensor<1, 2>(double)>;
+  template <int dim>
+  using VectorTimeFunction = std::function<dealii::Tensor<1, dim>(double)>;
 
-  /**
-   * Rigid placement of a die: x = c + R(theta) (X - X_ref) (see the file documentation).
-   */
-  class DiePose
+  template <int dim>
+  class RollingMotion;
+
+  /** Rigid placement of a die: x = c + R(theta) (X - X_ref) (see the file documentation). */
+  template <int dim>
+  class DiePose;
+
+  /** 2D pose: rotation by theta about the out-of-plane axis. */
+  template <>
+  class DiePose<2>
   {
   public:
     /** Identity pose: local and global frames coincide. */
@@ -41,10 +53,12 @@ namespace ausroll::contact
     /**
      * Pose with the reference point @p local_reference (local coordinates) placed at
      * @p reference_position (global) and the die rotated by @p angle (counter-clockwise).
+     * @p axis is ignored (2D: always the out-of-plane axis).
      */
-    DiePose(const dealii::Point<2> &reference_position,
-            double                  angle,
-            const dealii::Point<2> &local_reference = dealii::Point<2>());
+    DiePose(const dealii::Point<2>     &reference_position,
+            double                      angle,
+            const dealii::Point<2>     &local_reference = dealii::Point<2>(),
+            const dealii::Tensor<1, 2> &axis = dealii::Tensor<1, 2>());
 
     /** Global position x of the die point with local coordinates @p X. */
     dealii::Point<2> to_global(const dealii::Point<2> &X) const;
@@ -78,10 +92,48 @@ namespace ausroll::contact
     dealii::Point<2> X_ref;
   };
 
+  /** 3D pose: rotation by theta about the unit axis a (e_z by default). */
+  template <>
+  class DiePose<3>
+  {
+  public:
+    /** Identity pose. */
+    DiePose();
+
+    /**
+     * Pose with @p local_reference placed at @p reference_position and the die rotated by
+     * @p angle about @p axis (nonzero; normalised; zero means e_z).
+     */
+    DiePose(const dealii::Point<3>     &reference_position,
+            double                      angle,
+            const dealii::Point<3>     &local_reference = dealii::Point<3>(),
+            const dealii::Tensor<1, 3> &axis = dealii::Tensor<1, 3>());
+
+    dealii::Point<3>     to_global(const dealii::Point<3> &X) const;
+    dealii::Point<3>     to_local(const dealii::Point<3> &x) const;
+    dealii::Tensor<1, 3> rotate_vector_to_global(const dealii::Tensor<1, 3> &v) const;
+    dealii::Tensor<1, 3> rotate_vector_to_local(const dealii::Tensor<1, 3> &v) const;
+
+    const dealii::Point<3> &reference_position() const { return c; }
+    /** Rotation angle theta about axis() (rad, right-hand rule). */
+    double angle() const { return theta; }
+    /** Unit rotation axis a. */
+    const dealii::Tensor<1, 3> &axis() const { return a; }
+    const dealii::Point<3>     &local_reference() const { return X_ref; }
+
+  private:
+    dealii::Point<3>     c;
+    double               theta = 0.0;
+    dealii::Tensor<1, 3> a;
+    dealii::Tensor<2, 3> R; ///< R(theta) about a
+    dealii::Point<3>     X_ref;
+  };
+
   /**
    * Abstract motion of a rigid die: its pose at every time t. Velocities are provided by central
    * differences of the pose in time (step h = 1e-6 (1 + |t|)) unless a subclass overrides them.
    */
+  template <int dim>
   class DieMotion
   {
   public:
@@ -89,19 +141,22 @@ namespace ausroll::contact
     virtual ~DieMotion() = default;
 
     /** Pose of the die at time @p t. */
-    virtual DiePose pose(double t) const = 0;
+    virtual DiePose<dim> pose(double t) const = 0;
 
     /** Global velocity at time @p t of the die-fixed point with local coordinates @p X. */
-    virtual dealii::Tensor<1, 2> velocity(double t, const dealii::Point<2> &X) const;
+    virtual dealii::Tensor<1, dim> velocity(double t, const dealii::Point<dim> &X) const;
 
-    /** Angular velocity d theta / dt at time @p t (rad per time unit, counter-clockwise). */
+    /** Angular velocity d theta / dt at time @p t (rad per time unit, about the pose's axis). */
     virtual double angular_velocity(double t) const;
 
     /**
      * Global displacement of the die-fixed point @p X between times @p t0 and @p t1:
      * pose(t1).to_global(X) - pose(t0).to_global(X).
      */
-    dealii::Tensor<1, 2> displacement(double t0, double t1, const dealii::Point<2> &X) const;
+    dealii::Tensor<1, dim> displacement(double t0, double t1, const dealii::Point<dim> &X) const;
+
+    /** This motion as a planetary rolling motion, or nullptr if it is another kind. */
+    virtual const RollingMotion<dim> *as_rolling() const { return nullptr; }
 
   protected:
     /** Time step used for the central differences at time @p t. */
@@ -109,28 +164,30 @@ namespace ausroll::contact
   };
 
   /** A die that does not move: the same pose at all times (identity by default). */
-  class FixedPose : public DieMotion
+  template <int dim>
+  class FixedPose : public DieMotion<dim>
   {
   public:
     /** Die held at @p pose. */
-    explicit FixedPose(const DiePose &pose = DiePose());
+    explicit FixedPose(const DiePose<dim> &pose = DiePose<dim>());
 
     /** The fixed pose. */
-    DiePose pose(double t) const override;
+    DiePose<dim> pose(double t) const override;
 
     /** Zero. */
-    dealii::Tensor<1, 2> velocity(double t, const dealii::Point<2> &X) const override;
+    dealii::Tensor<1, dim> velocity(double t, const dealii::Point<dim> &X) const override;
 
     /** Zero. */
     double angular_velocity(double t) const override;
 
   private:
     /** The pose. */
-    DiePose fixed;
+    DiePose<dim> fixed;
   };
 
   /**
-   * Prescribed translation u(t) and rotation phi(t) about a pivot:
+   * Prescribed translation u(t) and rotation phi(t) about a pivot (3D: about an axis through the
+   * pivot):
    *
    *     x(t) = p0 + u(t) + R(phi(t)) (X - P),
    *
@@ -138,44 +195,56 @@ namespace ausroll::contact
    * p0 = P: the local frame coincides with the global one at rest). Both functions are supplied
    * by the caller (e.g. from a load curve); an empty function counts as zero.
    */
-  class PrescribedMotion : public DieMotion
+  template <int dim>
+  class PrescribedMotion : public DieMotion<dim>
   {
   public:
     /**
      * Motion with @p translation u(t) and @p rotation phi(t) (rad, counter-clockwise) about the
      * @p pivot P (local coordinates), whose rest position p0 equals P.
      */
-    PrescribedMotion(VectorTimeFunction      translation,
-                     TimeFunction            rotation,
-                     const dealii::Point<2> &pivot = dealii::Point<2>());
+    PrescribedMotion(VectorTimeFunction<dim>   translation,
+                     TimeFunction              rotation,
+                     const dealii::Point<dim> &pivot = dealii::Point<dim>());
 
-    /** As above, with the pivot at global position @p pivot_rest_position when u = 0. */
-    PrescribedMotion(VectorTimeFunction      translation,
-                     TimeFunction            rotation,
-                     const dealii::Point<2> &pivot,
-                     const dealii::Point<2> &pivot_rest_position);
+    /**
+     * As above, with the pivot at global position @p pivot_rest_position when u = 0, rotating
+     * about @p axis (3D; zero: e_z; ignored in 2D).
+     */
+    PrescribedMotion(VectorTimeFunction<dim>       translation,
+                     TimeFunction                  rotation,
+                     const dealii::Point<dim>     &pivot,
+                     const dealii::Point<dim>     &pivot_rest_position,
+                     const dealii::Tensor<1, dim> &axis = dealii::Tensor<1, dim>());
 
     /** Translation with constant @p velocity from the rest position (u = v t), no rotation. */
-    static PrescribedMotion constant_velocity(const dealii::Tensor<1, 2> &velocity);
+    static PrescribedMotion constant_velocity(const dealii::Tensor<1, dim> &velocity);
 
-    /** Pose: c = p0 + u(t), theta = phi(t), X_ref = P. */
-    DiePose pose(double t) const override;
+    /** Pose: c = p0 + u(t), theta = phi(t) about the axis, X_ref = P. */
+    DiePose<dim> pose(double t) const override;
 
   private:
     /** u(t). */
-    VectorTimeFunction translation;
+    VectorTimeFunction<dim> translation;
     /** phi(t). */
     TimeFunction rotation;
     /** Pivot P in local coordinates. */
-    dealii::Point<2> pivot;
+    dealii::Point<dim> pivot;
     /** Global position p0 of the pivot at rest. */
-    dealii::Point<2> pivot_rest;
+    dealii::Point<dim> pivot_rest;
+    /** Rotation axis (3D). */
+    dealii::Tensor<1, dim> axis;
   };
 
   /**
    * Planetary rolling (NOFEAP thesis, section 4.1): the workpiece (pitch radius R_G, centre O_G)
    * does not rotate; the die (pitch radius R_D, local frame with the die centre at the origin)
-   * revolves about O_G and spins about its own centre.
+   * revolves about O_G and spins about its own centre. In 3D the workpiece axis is the line
+   * through O_G along the unit vector a (`axis`, e_z by default), the die axis is parallel to it
+   * through the die centre, and the motion below takes place in the plane orthogonal to a, with
+   * polar angles measured from e_1 (`reference`, its part orthogonal to a; by default
+   * Frame3D::perpendicular(a), e_x for a = e_z) towards e_2 = a x e_1. With a = e_z this is the 2D
+   * motion of the (x, y) plane, z unchanged.
    *
    * With sigma = +1 (direction = counter-clockwise revolution) or -1 (clockwise):
    * - line of centres angle  psi(t) = psi_0 + sigma theta_G(t)   (polar angle of the die centre
@@ -195,14 +264,19 @@ namespace ausroll::contact
    * (A blended law theta_D = beta (R_G/R_D) theta_G + (1 - beta) theta_s' is obtained with
    * theta_s = theta_s' - (R_G/R_D) theta_G.)
    */
-  class RollingMotion : public DieMotion
+  template <int dim>
+  class RollingMotion : public DieMotion<dim>
   {
   public:
     /** Data of a rolling motion; lengths in mm, angles in rad. */
     struct Data
     {
-      /** Global centre O_G of the (non-rotating) workpiece. */
-      dealii::Point<2> workpiece_center;
+      /** Global centre O_G of the (non-rotating) workpiece (3D: a point of its axis). */
+      dealii::Point<dim> workpiece_center;
+      /** 3D: direction a of the workpiece axis (zero: e_z). Ignored in 2D. */
+      dealii::Tensor<1, dim> axis;
+      /** 3D: direction of polar angle 0 (zero: Frame3D::perpendicular(a)). Ignored in 2D. */
+      dealii::Tensor<1, dim> reference;
       /** Workpiece pitch radius R_G (> 0). */
       double workpiece_radius = 0.0;
       /** Die pitch radius R_D (> 0). */
@@ -229,7 +303,10 @@ namespace ausroll::contact
     explicit RollingMotion(const Data &data);
 
     /** Pose: c = die_center(t), theta = theta_0 + sigma (theta_G + theta_D), X_ref = origin. */
-    DiePose pose(double t) const override;
+    DiePose<dim> pose(double t) const override;
+
+    /** This motion. */
+    const RollingMotion<dim> *as_rolling() const override { return this; }
 
     /** Line of centres angle psi(t) = psi_0 + sigma theta_G(t). */
     double line_angle(double t) const;
@@ -238,21 +315,26 @@ namespace ausroll::contact
     double center_distance(double t) const;
 
     /** Global die centre c(t). */
-    dealii::Point<2> die_center(double t) const;
+    dealii::Point<dim> die_center(double t) const;
 
     /** Die spin relative to the line of centres, theta_D(t) (see the class documentation). */
     double spin_angle(double t) const;
 
     /** Pitch point O_G + R_G (cos psi, sin psi) on the workpiece pitch circle. */
-    dealii::Point<2> pitch_point(double t) const;
+    dealii::Point<dim> pitch_point(double t) const;
 
     /** The data. */
     const Data &data() const { return d; }
 
   private:
+    /** The point O_G + r (cos psi e_1 + sin psi e_2) (2D: e_1 = x, e_2 = y). */
+    dealii::Point<dim> polar_point(double r, double psi) const;
+
     /** The data (with defaults filled in). */
     Data d;
     /** a_0. */
     double a0;
+    /** 3D: the in-plane basis e_1, e_2 (unused in 2D). */
+    dealii::Tensor<1, dim> e1, e2;
   };
 } // namespace ausroll::contact

@@ -10,23 +10,30 @@
 #include <ausroll/contact/friction_law.h>
 #include <ausroll/contact/rigid_surface.h>
 
+#include <array>
 #include <limits>
 #include <memory>
 #include <set>
 #include <string>
+#include <type_traits>
 
 namespace ausroll::contact
 {
   /** Where a point lies relative to a die, in global coordinates. */
+  template <int dim>
   struct DieProjection
   {
-    bool                 valid = false; ///< false if beyond the search distance
-    double               gap = 0.;      ///< signed gap, negative = penetration
-    dealii::Point<2>     point;         ///< closest die point (global)
-    dealii::Tensor<1, 2> normal;        ///< unit normal out of the die (global)
-    dealii::Tensor<1, 2> tangent;       ///< unit tangent (global), normal rotated by -90 degrees
-    double               s = 0.;        ///< curvilinear coordinate on the die (die frame)
-    dealii::Point<2>     local_point;   ///< closest die point in die coordinates
+    bool                   valid = false; ///< false if beyond the search distance
+    double                 gap = 0.;      ///< signed gap, negative = penetration
+    dealii::Point<dim>     point;         ///< closest die point (global)
+    dealii::Tensor<1, dim> normal;        ///< unit normal out of the die (global)
+    /** Unit tangents (global): 2D the normal rotated by -90 degrees; 3D (t_1, t_2, n)
+        right-handed (rigid_surface.h). */
+    std::array<dealii::Tensor<1, dim>, dim - 1> tangents;
+    dealii::Tensor<1, dim>                      tangent;       ///< tangents[0]
+    std::array<double, dim - 1>                 coordinates{}; ///< surface coordinates (die frame)
+    double             s = 0.;      ///< coordinates[0] (2D: arc length on the die)
+    dealii::Point<dim> local_point; ///< closest die point in die coordinates
   };
 
   /**
@@ -63,37 +70,46 @@ namespace ausroll::contact
   };
 
   /**
-   * A rigid die given by its surface (a RigidSurface<2> of one of the shapes of
-   * contact/surfaces/, die coordinates) and its motion
-   * (DieMotion: pose as a function of pseudo-time), with the friction law of `Friction` and the
-   * workpiece boundaries (`Candidate boundaries`) that may touch it.
+   * A rigid die given by its surface (a RigidSurface<dim> of one of the shapes of
+   * contact/surfaces/, die coordinates: 2D shapes for dim = 2, 3D shapes (surface_factory_3d.h)
+   * for dim = 3) and its motion (DieMotion<dim>: pose as a function of pseudo-time), with the
+   * friction law of `Friction` and the workpiece boundaries (`Candidate boundaries`) that may
+   * touch it.
    */
+  template <int dim>
   class RigidDie
   {
   public:
-    /** Build die @p index from its parameters. Throws InputError naming the entry. */
+    /**
+     * Build die @p index from its parameters. Throws InputError naming the entry (also for a
+     * `Shape` of the other dimension).
+     */
     RigidDie(const DieParameters &parameters, const unsigned int index);
 
     /** Project global point @p x onto the die in its pose at time @p t. */
-    DieProjection project(const dealii::Point<2> &x, const double t) const;
+    DieProjection<dim> project(const dealii::Point<dim> &x, const double t) const;
 
     /** Global position at time @p t of the die point with die coordinates @p X. */
-    dealii::Point<2> material_point(const dealii::Point<2> &X, const double t) const;
+    dealii::Point<dim> material_point(const dealii::Point<dim> &X, const double t) const;
 
     /** Pose at time @p t. */
-    DiePose pose(const double t) const { return motion->pose(t); }
+    DiePose<dim> pose(const double t) const { return motion->pose(t); }
+
+    /** The motion. */
+    const DieMotion<dim> &die_motion() const { return *motion; }
 
     /** The planetary rolling motion of this die, or nullptr if it moves otherwise. */
-    const RollingMotion *rolling_motion() const
-    {
-      return dynamic_cast<const RollingMotion *>(motion.get());
-    }
+    const RollingMotion<dim> *rolling_motion() const { return motion->as_rolling(); }
 
     /** The die surface in die coordinates (the dimension-generic interface). */
-    const RigidSurface<2> &surface() const { return *shape; }
+    const RigidSurface<dim> &surface() const { return *shape; }
 
     /** The die surface in die coordinates seen by its arc length s (the 2D contact code). */
-    const DieProfile &die_surface() const { return profile; }
+    template <int d = dim, typename = std::enable_if_t<d == 2>>
+    const DieProfile &die_surface() const
+    {
+      return *profile;
+    }
 
     /** True if workpiece boundary @p id may touch this die. */
     bool is_candidate(const unsigned int id) const
@@ -106,9 +122,9 @@ namespace ausroll::contact
     const double                             search_distance; ///< `Search distance` (infinite if 0)
 
   private:
-    std::unique_ptr<const RigidSurface<2>> shape;
-    DieProfile                             profile;
-    std::unique_ptr<DieMotion>             motion;
-    std::set<unsigned int>                 candidates;
+    std::unique_ptr<const RigidSurface<dim>> shape;
+    std::unique_ptr<DieProfile>              profile; ///< 2D only
+    std::unique_ptr<DieMotion<dim>>          motion;
+    std::set<unsigned int>                   candidates;
   };
 } // namespace ausroll::contact

@@ -12,10 +12,10 @@ namespace ausroll::io::postprocess
     const contact::ContactOperator<dim> &contact = input.contact;
     for (unsigned int k = 0; k < contact.n_dies(); ++k)
     {
-      const contact::RigidDie &die = contact.die(k);
-      const auto               c = contact.die_contact(k);
-      const contact::DiePose   pose = die.pose(input.time);
-      const std::string        p = "die_" + die.name + "_";
+      const contact::RigidDie<dim> &die = contact.die(k);
+      const auto                    c = contact.die_contact(k);
+      const contact::DiePose<dim>   pose = die.pose(input.time);
+      const std::string             p = "die_" + die.name + "_";
       for (unsigned int d = 0; d < dim; ++d)
         row.emplace_back(p + "force_" + std::string(1, "xyz"[d]), c.force[d]);
       row.emplace_back(p + "x", pose.reference_position()[0]);
@@ -25,16 +25,16 @@ namespace ausroll::io::postprocess
       row.emplace_back(p + "slip_nodes", c.n_slip);
       row.emplace_back(p + "contact_length", c.contact_length);
       row.emplace_back(p + "contact_width", c.contact_width);
-      if (const contact::RollingMotion *rolling = die.rolling_motion())
+      if (const contact::RollingMotion<dim> *rolling = die.rolling_motion())
         rolling_columns(*rolling, input.time, Tensor<1, 2>({c.force[0], c.force[1]}), p, row);
     }
   }
 
-  void rolling_columns(const contact::RollingMotion &rolling,
-                       const double                  time,
-                       const Tensor<1, 2>           &force,
-                       const std::string            &prefix,
-                       HistoryRow                   &row)
+  void rolling_columns(const contact::RollingMotion<2> &rolling,
+                       const double                     time,
+                       const Tensor<1, 2>              &force,
+                       const std::string               &prefix,
+                       HistoryRow                      &row)
   {
     const auto        &d = rolling.data();
     const double       psi = rolling.line_angle(time);

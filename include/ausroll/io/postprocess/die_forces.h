@@ -38,9 +38,9 @@ namespace ausroll::io::postprocess
    * the die presses), `force_tangential` (along e_t = k x e_r, counter-clockwise) and
    * `force_magnitude` |F|.
    */
-  void rolling_columns(const contact::RollingMotion &rolling,
-                       const double                  time,
-                       const dealii::Tensor<1, 2>   &force,
-                       const std::string            &prefix,
-                       HistoryRow                   &row);
+  void rolling_columns(const contact::RollingMotion<2> &rolling,
+                       const double                     time,
+                       const dealii::Tensor<1, 2>      &force,
+                       const std::string               &prefix,
+                       HistoryRow                      &row);
 } // namespace ausroll::io::postprocess
