@@ -334,6 +334,11 @@ namespace ausroll::scene
       v->reinit(owned_dofs, comm);
     solution_ghosted.reinit(owned_dofs, relevant_dofs, comm);
     residual_ghosted.reinit(owned_dofs, relevant_dofs, comm);
+    if (contact.active())
+    {
+      curved_die_tangent.setup(mapping, dof_handler);
+      non_candidate_penetration.setup(mapping, dof_handler);
+    }
 
     double h_min = std::numeric_limits<double>::max();
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -522,6 +527,10 @@ namespace ausroll::scene
       newton_log << "      contact: " << changes << " status change" << (changes > 1 ? "s" : "")
                  << ", re-assembling" << std::endl;
     }
+
+    if (with_matrix && contact.active() && parameters.contact.curvature_tangent)
+      curved_die_tangent.add_to(
+          contact, newton_constraints, solution_ghosted, residual_ghosted, time, system_matrix);
 
     // Force level: external loads and reactions (residual at prescribed DoFs).
     double reaction_sq = 0.;
@@ -908,6 +917,14 @@ namespace ausroll::scene
       regression_log << line.str() << std::endl;
 
       check_distortion();
+      if (contact.active())
+      {
+        // a boundary that may not touch a die passes through it (issue 17)
+        const std::string penetration = non_candidate_penetration.check(
+            contact, solution_ghosted, time, step_number, 1e-2 * min_cell_diameter, comm);
+        if (!penetration.empty())
+          log << "  warning: " << penetration << std::endl;
+      }
 
       if (parameters.adaptivity.interval > 0 && step_number % parameters.adaptivity.interval == 0
           && t_done < t_end * (1. - 1e-12))
