@@ -4,7 +4,12 @@
   punch      prm/hard_punch.prm, Local refinements = 2, 3, 4 (cells of 0.625, 0.31, 0.156 mm
              under the punch), to d = 1 mm;
   upsetting  prm/upsetting.prm (platen contact on the top face and the free surface, F-bar) with
-             the predictor and the adaptive step control, Q2 8 x 6, 16 x 12, 32 x 24, to 30 %.
+             the predictor and the adaptive step control, Q2 8 x 6, 16 x 12, 32 x 24, 64 x 48,
+             to 30 %;
+  curvature  Contact/Curvature tangent: the elastic frictionless punch with the old and the new
+             tangent, the plastic punch (refinements 3) with the new one;
+  top_only   the upsetting with the platen on the top face only (8 x 6): warns that the side
+             surface passes through the platen, fails at 29 %.
 
 With --old the same meshes run with the stepping of before (Step control = halving, Predictor =
 none, Contact/Strategy = active set). Prints one Markdown row per run (steps, cutbacks, Newton
@@ -34,10 +39,26 @@ CASES = {
     "upsetting": ("upsetting.prm", "die_platen_force_y", 1e-3, [
         ("8 x 6", ["Geometry/Rectangle/Cells = 8, 6"]),
         ("16 x 12", ["Geometry/Rectangle/Cells = 16, 12"]),
-        ("32 x 24", ["Geometry/Rectangle/Cells = 32, 24"])]),
+        ("32 x 24", ["Geometry/Rectangle/Cells = 32, 24"]),
+        ("64 x 48", ["Geometry/Rectangle/Cells = 64, 48"])]),
+    # the curvature term of the slip-node tangent (Contact/Curvature tangent), elastic and
+    # plastic punch; and the upsetting with the platen on the top face only (warns that the
+    # side surface passes through the platen, then folds)
+    "curvature": ("hard_punch.prm", "die_punch_force_y", 1.0, [
+        ("elastic, refinements 2, old tangent",
+         ["Geometry/Local refinements = 2", "Material/Yield stress = 1e7",
+          "Contact/Die 0/Friction = frictionless"]),
+        ("elastic, refinements 2, curvature tangent",
+         ["Geometry/Local refinements = 2", "Material/Yield stress = 1e7",
+          "Contact/Die 0/Friction = frictionless", "Contact/Curvature tangent = true"]),
+        ("refinements 3, curvature tangent",
+         ["Geometry/Local refinements = 3", "Contact/Curvature tangent = true"])]),
+    "top_only": ("upsetting.prm", "die_platen_force_y", 1e-3, [
+        ("8 x 6", ["Geometry/Rectangle/Cells = 8, 6", "Contact/Die 0/Candidate boundaries = 3"])]),
 }
 NEW = {"punch": [], "upsetting": ["Loading/Predictor = linear extrapolation",
-                                  "Loading/Step control = adaptive"]}
+                                  "Loading/Step control = adaptive"], "curvature": [],
+       "top_only": ["Loading/Predictor = linear extrapolation", "Loading/Step control = adaptive"]}
 OLD = ["Loading/Step control = halving", "Loading/Predictor = none",
        "Contact/Strategy = active set"]
 
@@ -89,6 +110,9 @@ def main():
                   f"{len(rows)} | {cutbacks} | {statistics.median(newton) if newton else 0} / "
                   f"{max(newton) if newton else 0} | {cpu:.0f} | {force:.1f} | "
                   f"{'yes' if warned else 'no'} |", flush=True)
+        if case in ("curvature", "top_only"):
+            continue
+        forces = forces[-3:]  # the three finest meshes that finished
         ratio = ((forces[1] - forces[0]) / (forces[2] - forces[1])
                  if len(forces) == 3 and forces[2] != forces[1] else 0.)
         if len(forces) == 3 and ratio > 1:

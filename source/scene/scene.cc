@@ -70,6 +70,8 @@ namespace ausroll::scene
                                                                       time,
                                                                       *timer,
                                                                       newton_log);
+      if (parameters.contact.curvature_tangent)
+        equilibrium->curvature_tangent = &curved_die_tangent;
       system.setup_system();
       setup_dof_dependents();
       system.initialize_material_points(assembler->quadrature().size());
@@ -150,6 +152,11 @@ namespace ausroll::scene
         system.mapping,
         [this](const Point<dim> &x) { return kinematics.volume_factor(x); },
         system.min_cell_diameter);
+    if (contact.active())
+    {
+      curved_die_tangent.setup(system.mapping, system.dof_handler);
+      non_candidate_penetration.setup(system.mapping, system.dof_handler);
+    }
   }
 
   template <int dim>
@@ -320,6 +327,19 @@ namespace ausroll::scene
     io::write_regression_line(regression_log, step_number, row);
 
     check_distortion();
+    if (contact.active())
+    {
+      // a boundary that may not touch a die passes through it
+      const std::string penetration
+          = non_candidate_penetration.check(contact,
+                                            system.solution_ghosted,
+                                            step.time,
+                                            step_number,
+                                            1e-2 * system.min_cell_diameter,
+                                            comm);
+      if (!penetration.empty())
+        log << "  warning: " << penetration << std::endl;
+    }
 
     const double t_end = parameters.loading.end_time;
     if (parameters.adaptivity.interval > 0 && step_number % parameters.adaptivity.interval == 0

@@ -68,6 +68,13 @@ namespace ausroll::solver
       detail_log << "      contact: " << changes << " status change" << (changes > 1 ? "s" : "")
                  << ", re-assembling" << std::endl;
     }
+    if (with_matrix && contact.active() && curvature_tangent != nullptr)
+      curvature_tangent->add_to(contact,
+                                system.newton_constraints,
+                                system.solution_ghosted,
+                                system.residual_ghosted,
+                                time,
+                                system.system_matrix);
     // Force level: external loads and reactions (residual at prescribed DoFs).
     last_residual_norm = system.free_residual.l2_norm();
     last_reference_force = std::max(system.external_force.l2_norm(), system.reaction_norm());

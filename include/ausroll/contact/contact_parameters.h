@@ -104,6 +104,9 @@ namespace ausroll::contact
     std::vector<DieParameters>    dies;  ///< the first `Number of dies`
     unsigned int max_status_changes = 6; ///< `Maximum status changes` per node and step
     double       ratio_tolerance = 1e-3; ///< `Ratio tolerance` of the load-increment ratio
+    /** `Curvature tangent`: the turning of the die normal in the tangent of slipping nodes
+        (contact/curved_die_tangent.h). */
+    bool curvature_tangent = false;
 
     /** Declare subsection `Contact`. */
     static void declare_parameters(dealii::ParameterHandler &prm);

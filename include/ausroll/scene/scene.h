@@ -9,6 +9,8 @@
 #include <ausroll/adaptivity/material_point_transfer.h>
 #include <ausroll/contact/contact_operator.h>
 #include <ausroll/contact/contact_strategy.h>
+#include <ausroll/contact/curved_die_tangent.h>
+#include <ausroll/contact/non_candidate_penetration.h>
 #include <ausroll/io/history.h>
 #include <ausroll/io/postprocess/interface.h>
 #include <ausroll/material/constitutive_model.h>
@@ -125,6 +127,10 @@ namespace ausroll::scene
     mechanics::BoundaryConditions<dim>           boundary_conditions;
     std::unique_ptr<mechanics::Assembler<dim>>   assembler;
     contact::ContactOperator<dim>                contact;
+    /** Curvature part of the slip-node tangent on curved dies (`Contact/Curvature tangent`). */
+    contact::CurvedDieTangent<dim> curved_die_tangent;
+    /** Warns once when a boundary that is not a contact candidate passes through a die. */
+    contact::NonCandidatePenetration<dim> non_candidate_penetration;
     /** `Contact/Strategy`: when contact statuses change (acts on contact). */
     std::unique_ptr<contact::StatusStrategy> contact_strategy;
     /** Declared after the system (its matrix): destroyed first (its kept direct factorisation

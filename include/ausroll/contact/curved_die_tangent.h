@@ -1,0 +1,91 @@
+/**
+ * @file curved_die_tangent.h
+ * The curvature part of the tangent of slipping contact nodes on curved dies.
+ */
+#pragma once
+
+#include <ausroll/contact/contact_operator.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <unordered_map>
+
+namespace ausroll::contact
+{
+  /**
+   * A slipping node (frictionless or Coulomb) is held on its die by the constraint line
+   * u_a = c u_b + b with c = -n_b / n_a (n the die normal at the node's projection, a the
+   * component with the larger normal entry, b the other one): its one remaining equation is the
+   * condensed row E = v . (T r) with v = e_b + c e_a (a vector along the die tangent), r the
+   * node's residual (its reaction) and T the friction row transform (I for frictionless,
+   * I + mu s t (x) n for Coulomb). The assembled tangent holds v . T (dr/du) v with v, T frozen
+   * at the iterate; on a curved die the normal turns as the node slides, dn = (dn/ds) ds,
+   * and E changes also by
+   *
+   *   dE = [ (dc/du_b) (T r)_a + (v . w) (dn/du_b . r) ] du_b,   w = (T - I) n,
+   *   dc/du_b = -(dn_b n_a - n_b dn_a) / n_a^2,   dn/du_b = (dn/ds) (t . v),
+   *
+   * (the term of dT along dt vanishes because v is normal to n). Without it Newton converges
+   * only linearly once the reactions are large, with the ratio ~ R_n / (R K_tt) (R the die
+   * radius): in the punch of doc/scenes/hard_cases.md the last iterations drop by a factor of
+   * 1e-3 to 1e-4 instead of squaring the residual, in the elastic punch by 0.02. add_to() adds
+   * this term to the diagonal entry of u_b; dn/ds is taken from two projections a small
+   * distance apart along the tangent (flat dies: zero, nothing is added). The change of the
+   * normal by the inhomogeneity b of the constraint (the gap, of second order near
+   * convergence) is left out.
+   *
+   * Works on the data that ContactOperator makes public: the constraint lines it adds, its row
+   * transforms and its dies; a node is taken as slipping when its two DoFs are tied by one
+   * constraint line (stick lines, Dirichlet lines and hanging-node lines look different).
+   */
+  template <int dim>
+  class CurvedDieTangent
+  {
+  public:
+    /** Component and support point of each locally relevant DoF of @p dof_handler (call after
+        every change of the DoFs). */
+    void setup(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &dof_handler);
+
+    /**
+     * Add the curvature term of every locally owned slipping node at displacement @p u (ghosted)
+     * with residual @p residual (ghosted, the raw f_int - f_ext with the reactions) at time
+     * @p time to @p matrix (assembled and compressed; compressed again here). Returns the number
+     * of nodes with a nonzero term on this rank.
+     */
+    unsigned int add_to(const ContactOperator<dim>                  &contact,
+                        const dealii::AffineConstraints<double>     &constraints,
+                        const dealii::TrilinosWrappers::MPI::Vector &u,
+                        const dealii::TrilinosWrappers::MPI::Vector &residual,
+                        const double                                 time,
+                        dealii::TrilinosWrappers::SparseMatrix      &matrix) const;
+
+    /**
+     * The term for one node, exposed for the unit test: normal @p normal and its derivative
+     * @p dn_ds along the unit tangent @p tangent, the constraint coefficient @p c of line a
+     * (u_a = c u_b + ...), the node's residual @p r and friction row transform @p T, components
+     * @p a (constrained) and @p b (free). Returns dE/du_b minus the frozen part.
+     */
+    static double node_term(const dealii::Tensor<1, 2> &normal,
+                            const dealii::Tensor<1, 2> &dn_ds,
+                            const dealii::Tensor<1, 2> &tangent,
+                            const double                c,
+                            const dealii::Tensor<1, 2> &r,
+                            const dealii::Tensor<2, 2> &T,
+                            const unsigned int          a,
+                            const unsigned int          b);
+
+  private:
+    struct DofInfo
+    {
+      unsigned int       component = 0;
+      dealii::Point<dim> support_point;
+    };
+    std::unordered_map<dealii::types::global_dof_index, DofInfo> dofs;
+    dealii::IndexSet                                             owned;
+  };
+} // namespace ausroll::contact

@@ -1,0 +1,123 @@
+#include <ausroll/contact/non_candidate_penetration.h>
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe.h>
+
+#include <functional>
+#include <map>
+#include <sstream>
+
+namespace ausroll::contact
+{
+  using namespace dealii;
+
+  template <int dim>
+  void NonCandidatePenetration<dim>::setup(const Mapping<dim>    &mapping,
+                                           const DoFHandler<dim> &dof_handler)
+  {
+    nodes.clear();
+    std::map<types::global_dof_index, Point<dim>> points;
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
+    const IndexSet                       owned = dof_handler.locally_owned_dofs();
+    const auto                          &fe = dof_handler.get_fe();
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    // node key: the DoF of component 0; one entry per node
+    std::map<types::global_dof_index, BoundaryNode> found;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+          {
+            cell->face(f)->get_dof_indices(face_dofs);
+            std::map<Point<dim>,
+                     BoundaryNode,
+                     std::function<bool(const Point<dim> &, const Point<dim> &)>>
+                by_point(
+                    [](const Point<dim> &a, const Point<dim> &b)
+                    {
+                      for (unsigned int d = 0; d < dim; ++d)
+                        if (std::abs(a[d] - b[d]) > 1e-12)
+                          return a[d] < b[d];
+                      return false;
+                    });
+            for (unsigned int i = 0; i < face_dofs.size(); ++i)
+            {
+              const auto p = points.find(face_dofs[i]);
+              if (p == points.end())
+                continue;
+              BoundaryNode &n = by_point[p->second];
+              n.X = p->second;
+              n.dofs[fe.face_system_to_component_index(i).first] = face_dofs[i];
+            }
+            for (const auto &[X, n] : by_point)
+              if (owned.is_element(n.dofs[0]))
+              {
+                BoundaryNode &node = found.emplace(n.dofs[0], n).first->second;
+                node.boundary_ids.push_back(cell->face(f)->boundary_id());
+              }
+          }
+    for (const auto &[key, n] : found)
+      nodes.push_back(n);
+  }
+
+  template <int dim>
+  std::string NonCandidatePenetration<dim>::check(const ContactOperator<dim>          &contact,
+                                                  const TrilinosWrappers::MPI::Vector &u,
+                                                  const double                         time,
+                                                  const unsigned int                   step,
+                                                  const double                         tolerance,
+                                                  const MPI_Comm                       comm)
+  {
+    static_assert(dim == 2, "the contact code is 2D");
+    if (reported)
+      return "";
+    double       depth = tolerance;
+    int          die = -1;
+    BoundaryNode deepest;
+    for (const BoundaryNode &n : nodes)
+      for (unsigned int k = 0; k < contact.n_dies(); ++k)
+      {
+        const RigidDie &d = contact.die(k);
+        bool            candidate = false;
+        for (const unsigned int id : n.boundary_ids)
+          candidate = candidate || d.is_candidate(id);
+        if (candidate)
+          continue;
+        Point<2> x;
+        for (unsigned int c = 0; c < 2; ++c)
+          x[c] = n.X[c] + u[n.dofs[c]];
+        const DieProjection p = d.project(x, time);
+        if (p.valid && -p.gap > depth)
+        {
+          depth = -p.gap;
+          die = k;
+          deepest = n;
+        }
+      }
+    // the deepest node over all ranks, told by its rank
+    const auto extremes = Utilities::MPI::min_max_avg(die >= 0 ? depth : 0., comm);
+    if (extremes.max <= tolerance)
+      return "";
+    const unsigned int    root = extremes.max_index;
+    std::array<double, 4> data{{double(die),
+                                double(deepest.boundary_ids.empty() ? 0 : deepest.boundary_ids[0]),
+                                deepest.X[0],
+                                deepest.X[1]}};
+    data = Utilities::MPI::broadcast(comm, data, root);
+    reported = true;
+    const RigidDie    &d = contact.die(static_cast<unsigned int>(data[0]));
+    std::ostringstream msg;
+    msg << "boundary " << data[1] << " of the workpiece passes through die "
+        << static_cast<unsigned int>(data[0]) << " '" << d.name << "' by " << extremes.max
+        << " mm at the node (" << data[2] << " " << data[3] << ") (reference coordinates) in step "
+        << step << ", t = " << time << ": it is not among Contact/Die "
+        << static_cast<unsigned int>(data[0])
+        << "/Candidate boundaries, so it cannot touch the die; results from here on are not "
+           "those of the forming process. Add "
+        << data[1] << " to Contact/Die " << static_cast<unsigned int>(data[0])
+        << "/Candidate boundaries";
+    return msg.str();
+  }
+
+  template class NonCandidatePenetration<2>;
+} // namespace ausroll::contact

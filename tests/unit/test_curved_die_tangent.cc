@@ -1,0 +1,116 @@
+// The curvature term of a slipping node's tangent on a curved die (contact/curved_die_tangent.h)
+// against the central difference of the condensed equation E(u_b) = v(x) . T(x) r on a circle
+// (r held fixed, so that the difference is the geometric part alone). Reference: the exact
+// derivative of the same formula; tolerance 1e-6 relative (difference step 1e-5 mm, the
+// truncation error is of order (step / radius)^2).
+#include <ausroll/contact/curved_die_tangent.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+  using namespace dealii;
+  using ausroll::contact::CurvedDieTangent;
+
+  struct CircleNode
+  {
+    Point<2> center{0., 10.};
+    double   radius = 10.;
+    double   mu_s = 0.;    // Coulomb slope times slip sign (0: frictionless)
+    unsigned a = 1, b = 0; // constrained / free component
+
+    Tensor<1, 2> normal(const Point<2> &x) const
+    {
+      // out of the die (the body is outside the circle)
+      Tensor<1, 2> n = x - center;
+      return n / n.norm();
+    }
+    static Tensor<1, 2> tangent(const Tensor<1, 2> &n)
+    {
+      Tensor<1, 2> t;
+      t[0] = n[1];
+      t[1] = -n[0];
+      return t;
+    }
+    Tensor<2, 2> transform(const Point<2> &x) const
+    {
+      const Tensor<1, 2> n = normal(x), t = tangent(n);
+      Tensor<2, 2>       T = outer_product(t, n) * mu_s;
+      T[0][0] += 1.;
+      T[1][1] += 1.;
+      return T;
+    }
+    double condensed_equation(const Point<2> &x, const Tensor<1, 2> &r) const
+    {
+      const Tensor<1, 2> n = normal(x);
+      Tensor<1, 2>       v;
+      v[b] = 1.;
+      v[a] = -n[b] / n[a];
+      return v * (transform(x) * r);
+    }
+  };
+
+  double check(const CircleNode &node, const double angle, const Tensor<1, 2> &r)
+  {
+    const Point<2>     x0 = node.center + node.radius * Point<2>(std::sin(angle), -std::cos(angle));
+    const Tensor<1, 2> n0 = node.normal(x0), t0 = CircleNode::tangent(n0);
+    const double       c0 = -n0[node.b] / n0[node.a];
+    Tensor<1, 2>       v0;
+    v0[node.b] = 1.;
+    v0[node.a] = c0;
+    const double h = 1e-5;
+    const double fd
+        = (node.condensed_equation(x0 + h * v0, r) - node.condensed_equation(x0 - h * v0, r))
+          / (2. * h);
+    const Tensor<1, 2> dn_ds = t0 / node.radius; // circle: dn/ds = t / R
+    const double       term
+        = CurvedDieTangent<2>::node_term(n0, dn_ds, t0, c0, r, node.transform(x0), node.a, node.b);
+    EXPECT_NEAR(term, fd, 1e-6 * std::max(1., std::abs(fd)));
+    return term;
+  }
+} // namespace
+
+TEST(CurvedDieTangent, FrictionlessNodeOnCircleMatchesDifference)
+{
+  CircleNode         node;
+  const Tensor<1, 2> r{{300., 2000.}};
+  for (const double angle : {0., 0.1, -0.25, 0.4})
+    check(node, angle, r);
+  // at the bottom of the punch (n = (0, -1)) the term is -(n . r) / R: the normal part of the
+  // residual over the die radius
+  EXPECT_NEAR(check(node, 0., Tensor<1, 2>{{0., 2000.}}), 2000. / 10., 1e-9);
+}
+
+TEST(CurvedDieTangent, CoulombNodeOnCircleMatchesDifference)
+{
+  CircleNode node;
+  node.mu_s = -0.3;
+  const Tensor<1, 2> r{{-150., 2500.}};
+  for (const double angle : {0.05, 0.3, -0.2})
+    check(node, angle, r);
+  node.mu_s = 0.3;
+  check(node, 0.2, r);
+}
+
+TEST(CurvedDieTangent, ConstrainedXComponent)
+{
+  // a node on the side of the circle: the x component is the constrained one
+  CircleNode node;
+  node.a = 0;
+  node.b = 1;
+  const Tensor<1, 2> r{{1800., -400.}};
+  for (const double angle : {1.2, 1.5, 1.8})
+    check(node, angle, r);
+}
+
+TEST(CurvedDieTangent, FlatDieAddsNothing)
+{
+  const Tensor<1, 2> n{{0., -1.}}, t{{-1., 0.}};
+  Tensor<2, 2>       T;
+  T[0][0] = T[1][1] = 1.;
+  EXPECT_EQ(
+      CurvedDieTangent<2>::node_term(n, Tensor<1, 2>(), t, 0., Tensor<1, 2>{{5., 7.}}, T, 1, 0),
+      0.);
+}
