@@ -400,19 +400,29 @@ namespace ausroll::scene
       const std::vector<double> contact_state = contact.pack_state();
       parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector> transfer(
           dof_handler);
+      // the converged solution before this one too: the predictor of the next step extrapolates
+      // from both (setup_system() zeroes it; the first step after every adaptation then had no
+      // prediction, or without re-equilibration the first iterate (1 + dt / dt_prev) u_n)
+      TrilinosWrappers::MPI::Vector previous_ghosted(owned_dofs, relevant_dofs, comm);
+      previous_ghosted = previous_start;
       triangulation.prepare_coarsening_and_refinement();
-      transfer.prepare_for_coarsening_and_refinement(solution_ghosted);
+      transfer.prepare_for_coarsening_and_refinement(
+          std::vector<const TrilinosWrappers::MPI::Vector *>{&solution_ghosted, &previous_ghosted});
       point_transfer->prepare();
       triangulation.execute_coarsening_and_refinement();
 
       setup_system();
       point_transfer->unpack();
-      TrilinosWrappers::MPI::Vector interpolated(owned_dofs, comm);
-      transfer.interpolate(interpolated);
+      TrilinosWrappers::MPI::Vector                interpolated(owned_dofs, comm);
+      TrilinosWrappers::MPI::Vector                previous_interpolated(owned_dofs, comm);
+      std::vector<TrilinosWrappers::MPI::Vector *> targets{&interpolated, &previous_interpolated};
+      transfer.interpolate(targets);
       hanging_constraints.distribute(interpolated);
+      hanging_constraints.distribute(previous_interpolated);
       solution = interpolated;
       solution_ghosted = solution;
       step_start = solution;
+      previous_start = previous_interpolated;
       rebase_material_points();
       contact.unpack_state(contact_state);
       setup_postprocessing();
@@ -429,7 +439,11 @@ namespace ausroll::scene
       if (!result.converged)
         throw RunFailure("re-equilibration after mesh adaptation at t = " + std::to_string(time)
                          + " failed: " + result.reason);
+      // the predictor's u_n-1 stays the converged state of the last step, not the interpolated
+      // state of this one (their difference is only the re-equilibration)
+      const TrilinosWrappers::MPI::Vector previous_converged = previous_start;
       commit_step();
+      previous_start = previous_converged;
     }
     return true;
   }
