@@ -5,8 +5,8 @@
 #  gear_rolling (prm/gear_rolling.prm, the resolved trailing scene): residual d_n along the flank (max-norm on the
 #    common radius grid), peak die force, die force at t = 0.6, peak contact pressure, plastic-zone
 #    depth (eps_p > 0.2 %).
-#  disk_rolling (prm/disk_rolling_adaptive.prm): the 15 degree ring refined to 15 / 2^level degrees
-#    in the band, radially likewise; steps = rolling steps per revolution (Coulomb mu = 0.3); mean
+#  disk_rolling (prm/disk_rolling.prm): the 15 degree ring refined to 15 / 2^level degrees
+#    in the 12 mm band, radially likewise; steps = rolling steps per revolution (Coulomb mu = 0.3); mean
 #    die force over 60-300 degrees of revolution, residual lobe (max) and trough (min) of the rim,
 #    and the residual rim in the max-norm on the common angle grid.
 # Usage: benchmarks/convergence/convergence.sh SCENE [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [more convergence_study.py options]
@@ -28,7 +28,7 @@ case "$SCENE" in
       --profile "d_n=residual_dn.csv:R:d_n")
     PLOT=gear_work_precision.png ;;
   disk_rolling)
-    PRM=prm/disk_rolling_adaptive.prm
+    PRM=prm/disk_rolling.prm
     DEFAULTS=("1 2 3" "144 288 576" 2)
     SCENE_OPTIONS=(
       --step-set "Loading/End time = {n + 8}" --step-set "Loading/Number of steps = {n + 8}"
