@@ -2,22 +2,23 @@
 # Convergence study of a resolved flagship scene with scripts/convergence_study.py: adaptive
 # levels (maximum level at the contact = initial refinement cycles) and a step-size sequence,
 # Richardson estimates and a work-precision PNG.
-#  gear_rolling (prm/gear_rolling_adaptive.prm): residual d_n along the flank (max-norm on the
+#  gear_rolling (prm/gear_rolling.prm, the resolved trailing scene): residual d_n along the flank (max-norm on the
 #    common radius grid), peak die force, die force at t = 0.6, peak contact pressure, plastic-zone
 #    depth (eps_p > 0.2 %).
-#  disk_rolling (prm/disk_rolling_adaptive.prm): the 15 degree ring refined to 15 / 2^level degrees
-#    in the band, radially likewise; steps = rolling steps per revolution (Coulomb mu = 0.3); mean
+#  disk_rolling (prm/disk_rolling.prm): the 15 degree ring refined to 15 / 2^level degrees
+#    in the 12 mm band, radially likewise; steps = rolling steps per revolution (Coulomb mu = 0.3); mean
 #    die force over 60-300 degrees of revolution, residual lobe (max) and trough (min) of the rim,
 #    and the residual rim in the max-norm on the common angle grid.
 # Usage: benchmarks/convergence/convergence.sh SCENE [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [more convergence_study.py options]
-#   SCENE: gear_rolling (defaults: levels "3 4 5", steps "60 120 240 480", step level 4) or
+#   SCENE: gear_rolling (defaults: levels "2 3 4 5", steps "60 120 240 480", step level 4) or
 #          disk_rolling (defaults: levels "1 2 3", steps "144 288 576", step level 2)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 SCENE="${1:-}"
 case "$SCENE" in
   gear_rolling)
-    DEFAULTS=("3 4 5" "60 120 240 480" 4)
+    PRM=prm/gear_rolling.prm
+    DEFAULTS=("2 3 4 5" "60 120 240 480" 4)
     SCENE_OPTIONS=(
       --set "Output/Write VTU = true" --set "Output/Interval = 1"
       --history "F_peak=max:hypot(die_die_force_x, die_die_force_y)"
@@ -27,6 +28,7 @@ case "$SCENE" in
       --profile "d_n=residual_dn.csv:R:d_n")
     PLOT=gear_work_precision.png ;;
   disk_rolling)
+    PRM=prm/disk_rolling.prm
     DEFAULTS=("1 2 3" "144 288 576" 2)
     SCENE_OPTIONS=(
       --step-set "Loading/End time = {n + 8}" --step-set "Loading/Number of steps = {n + 8}"
@@ -50,7 +52,7 @@ STEPS="${4:-${DEFAULTS[1]}}"
 STEP_LEVEL="${5:-${DEFAULTS[2]}}"
 shift $(( $# < 5 ? $# : 5 ))
 # shellcheck disable=SC2086
-exec /usr/bin/python3 "$ROOT/scripts/convergence_study.py" "$ROOT/prm/${SCENE}_adaptive.prm" \
+exec /usr/bin/python3 "$ROOT/scripts/convergence_study.py" "$ROOT/$PRM" \
   --ausroll "$AUSROLL" --work "$WORK" \
   --levels $LEVELS --level-set "Adaptivity/Maximum level = {level}" \
   --level-set "Adaptivity/Initial refinement cycles = {level}" \

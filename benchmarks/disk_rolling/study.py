@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Disk rolling study (prm/disk_rolling.prm, NOFEAP thesis section 4.2).
+"""Disk rolling study (prm/disk_rolling_uniform.prm, NOFEAP thesis section 4.2).
 
 Runs variants of the scene (one full revolution + unloading each) and writes
   * doc/figures/disk_rolling_force.png    die force vs revolution angle, three meshes (15, 7.5,
@@ -32,7 +32,7 @@ import os
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-BASE = os.path.join(ROOT, "prm", "disk_rolling.prm")
+BASE = os.path.join(ROOT, "prm", "disk_rolling_uniform.prm")
 ADAPTIVE = os.path.join(ROOT, "prm", "disk_rolling_adaptive.prm")
 sys.path.insert(0, os.path.join(ROOT, "benchmarks", "studies"))
 from study import pyplot  # noqa: E402  (matplotlib if installed, else None)

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
-"""Mesh sequence of the gear rolling pass (prm/gear_rolling.prm): wall and user CPU time, steps,
-Newton iterations, cutbacks, die force and flank deviation for Global refinements = 1, 2, 3, ...;
-errors relative to the finest mesh of the sequence. Not a test (ctest label benchmark).
+"""Uniform mesh sequence of the gear rolling pass (prm/gear_rolling_uniform.prm): wall and user
+CPU time, steps, Newton iterations, cutbacks, die force and flank deviation for Global
+refinements = 1, 2, 3, ...; errors relative to the finest mesh of the sequence. Not a test
+(ctest label benchmark).
 
 Usage (from the repository root, after building):
     /usr/bin/python3 benchmarks/gear_rolling/study.py [--ausroll build/ausroll] [--work DIR]
-        [--refinements 1 2 3] [--end-time 1.2 --steps 60] [--prm prm/gear_rolling.prm]
+        [--refinements 1 2 3] [--end-time 1.2 --steps 60] [--prm prm/gear_rolling_uniform.prm]
         [--plot doc/figures/gear_rolling_mesh_study.png]
 The pass is cut at --end-time (the step size is kept: --steps must match End time / 0.02).
 Prints a Markdown table (pasted into doc/benchmarks.md and doc/scenes/gear_rolling.md).
@@ -68,7 +69,7 @@ def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--ausroll", default=os.path.join(ROOT, "build", "ausroll"))
     p.add_argument("--work", default="/tmp/gear_rolling_study")
-    p.add_argument("--prm", default=os.path.join(ROOT, "prm", "gear_rolling.prm"))
+    p.add_argument("--prm", default=os.path.join(ROOT, "prm", "gear_rolling_uniform.prm"))
     p.add_argument("--refinements", type=int, nargs="+", default=[1, 2, 3])
     p.add_argument("--end-time", type=float, default=1.2)
     p.add_argument("--steps", type=int, default=60)

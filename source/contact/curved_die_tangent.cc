@@ -91,11 +91,11 @@ namespace ausroll::contact
         r[d] = residual[node_dofs[d]];
       }
       // the die the node lies on: the nearest one
-      int           die = -1;
-      DieProjection p;
+      int              die = -1;
+      DieProjection<2> p;
       for (unsigned int k = 0; k < contact.n_dies(); ++k)
       {
-        const DieProjection q = contact.die(k).project(x, time);
+        const DieProjection<2> q = contact.die(k).project(x, time);
         if (q.valid && (die < 0 || std::abs(q.gap) < std::abs(p.gap)))
         {
           die = k;
@@ -105,9 +105,9 @@ namespace ausroll::contact
       if (die < 0)
         continue;
       // dn/ds by central differences; skipped where the normal jumps (a kink of a polyline die)
-      const double        h = 1e-6 * std::max(1., x.norm());
-      const DieProjection plus = contact.die(die).project(x + h * p.tangent, time);
-      const DieProjection minus = contact.die(die).project(x - h * p.tangent, time);
+      const double           h = 1e-6 * std::max(1., x.norm());
+      const DieProjection<2> plus = contact.die(die).project(x + h * p.tangent, time);
+      const DieProjection<2> minus = contact.die(die).project(x - h * p.tangent, time);
       if (!plus.valid || !minus.valid)
         continue;
       const Tensor<1, 2> forward = (plus.normal - p.normal) / h;

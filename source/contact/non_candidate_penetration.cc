@@ -77,8 +77,8 @@ namespace ausroll::contact
     for (const BoundaryNode &n : nodes)
       for (unsigned int k = 0; k < contact.n_dies(); ++k)
       {
-        const RigidDie &d = contact.die(k);
-        bool            candidate = false;
+        const RigidDie<dim> &d = contact.die(k);
+        bool                 candidate = false;
         for (const unsigned int id : n.boundary_ids)
           candidate = candidate || d.is_candidate(id);
         if (candidate)
@@ -86,7 +86,7 @@ namespace ausroll::contact
         Point<2> x;
         for (unsigned int c = 0; c < 2; ++c)
           x[c] = n.X[c] + u[n.dofs[c]];
-        const DieProjection p = d.project(x, time);
+        const DieProjection<dim> p = d.project(x, time);
         if (p.valid && -p.gap > depth)
         {
           depth = -p.gap;
@@ -105,8 +105,8 @@ namespace ausroll::contact
                                 deepest.X[1]}};
     data = Utilities::MPI::broadcast(comm, data, root);
     reported = true;
-    const RigidDie    &d = contact.die(static_cast<unsigned int>(data[0]));
-    std::ostringstream msg;
+    const RigidDie<dim> &d = contact.die(static_cast<unsigned int>(data[0]));
+    std::ostringstream   msg;
     msg << "boundary " << data[1] << " of the workpiece passes through die "
         << static_cast<unsigned int>(data[0]) << " '" << d.name << "' by " << extremes.max
         << " mm at the node (" << data[2] << " " << data[3] << ") (reference coordinates) in step "

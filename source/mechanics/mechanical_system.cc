@@ -128,13 +128,14 @@ namespace ausroll::mechanics
   }
 
   template <int dim>
-  void MechanicalSystem<dim>::commit_step()
+  void MechanicalSystem<dim>::commit_step(const bool new_step)
   {
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto &point : material_points.get_data(cell))
           point->commit();
-    previous_start = step_start;
+    if (new_step)
+      previous_start = step_start;
     step_start = solution;
   }
 
@@ -181,19 +182,28 @@ namespace ausroll::mechanics
                                                  const std::function<void()> &unpack_data)
   {
     parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
+    // the converged solution before this one too: the predictor of the next step extrapolates
+    // from both (setup_system() zeroes it)
+    Vector previous_ghosted(owned_dofs, relevant_dofs, comm);
+    previous_ghosted = previous_start;
     triangulation.prepare_coarsening_and_refinement();
-    transfer.prepare_for_coarsening_and_refinement(solution_ghosted);
+    transfer.prepare_for_coarsening_and_refinement(
+        std::vector<const Vector *>{&solution_ghosted, &previous_ghosted});
     attach_data();
     triangulation.execute_coarsening_and_refinement();
 
     setup_system();
     unpack_data();
-    Vector interpolated(owned_dofs, comm);
-    transfer.interpolate(interpolated);
+    Vector                interpolated(owned_dofs, comm);
+    Vector                previous_interpolated(owned_dofs, comm);
+    std::vector<Vector *> targets{&interpolated, &previous_interpolated};
+    transfer.interpolate(targets);
     hanging_constraints.distribute(interpolated);
+    hanging_constraints.distribute(previous_interpolated);
     solution = interpolated;
     solution_ghosted = solution;
     step_start = solution;
+    previous_start = previous_interpolated;
   }
 
   template <int dim>

@@ -102,48 +102,6 @@ namespace ausroll::scene
   }
 
   template <int dim>
-  void Scene<dim>::write_checkpoint(const double dt)
-  {
-    TimerOutput::Scope scope(*timer, "checkpoint");
-    const io::RunState state{time,
-                             step_number,
-                             dt,
-                             stepper.last_step_size,
-                             output_counter,
-                             last_output_step,
-                             equilibrium->largest_reference_force,
-                             contact.pack_state(),
-                             postprocessors->vtu_records()};
-    io::write_checkpoint(
-        system, *point_transfer, state, parameters.entries, parameters.output.directory);
-    log << "  checkpoint written after step " << step_number << std::endl;
-  }
-
-  template <int dim>
-  double Scene<dim>::restore_checkpoint_state()
-  {
-    const io::RunState state = io::read_run_state(checkpoint_directory);
-    time = state.time;
-    step_number = state.step;
-    output_counter = state.output_counter;
-    last_output_step = state.last_output_step;
-    equilibrium->largest_reference_force = state.largest_reference_force;
-    stepper.last_step_size = state.last_step_size;
-    contact.set_time(time);
-    contact.update_geometry(system.solution_ghosted, false);
-    contact.unpack_state(state.contact);
-    postprocessors->set_vtu_records(state.vtu_records);
-    history = io::History::resume(comm, parameters.output.directory + "/history.csv", step_number);
-    // Reactions and material points of the restored state (no solve: it is in equilibrium).
-    std::string message;
-    if (!equilibrium->assemble(false, message))
-      throw RunFailure("resumed state: " + message);
-    log << "  resumed from " << checkpoint_directory << " at step " << step_number
-        << ", t = " << time << std::endl;
-    return state.step_size;
-  }
-
-  template <int dim>
   void Scene<dim>::setup_dof_dependents()
   {
     linear_solver.set_rigid_body_modes(system.dof_handler, system.mapping);
@@ -219,15 +177,15 @@ namespace ausroll::scene
       if (!result.converged)
         throw RunFailure("re-equilibration after mesh adaptation at t = " + std::to_string(time)
                          + " failed: " + result.reason);
-      commit_step();
+      commit_step(false); // the predictor's u_n-1 stays the last step's converged state
     }
     return true;
   }
 
   template <int dim>
-  void Scene<dim>::commit_step()
+  void Scene<dim>::commit_step(const bool new_step)
   {
-    system.commit_step();
+    system.commit_step(new_step);
     contact.commit();
     equilibrium->commit();
   }

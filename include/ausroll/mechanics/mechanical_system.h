@@ -78,9 +78,10 @@ namespace ausroll::mechanics
         committed ones. */
     void restore_step_start();
 
-    /** Accept the current iterate as converged: commit the material points, previous_start =
-        step_start, step_start = solution. */
-    void commit_step();
+    /** Accept the current iterate as converged: commit the material points, step_start =
+        solution and, for a @p new_step (not a re-equilibration on a new mesh at the same time),
+        previous_start = step_start first (the predictor extrapolates from the last two steps). */
+    void commit_step(const bool new_step = true);
 
     /** Zero residual, external_force, free_residual and, with @p with_matrix, system_matrix and
         rhs: the targets of an assembly. */

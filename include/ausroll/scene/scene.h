@@ -80,8 +80,9 @@ namespace ausroll::scene
     /** After every MechanicalSystem::setup_system(): what depends on the DoFs above
         mechanics/ (the linear solver's rigid-body modes, the contact nodes). */
     void setup_dof_dependents();
-    /** Accept the converged state: commit material points, solution and contact statuses. */
-    void commit_step();
+    /** Accept the converged state: commit material points, solution and contact statuses
+        (@p new_step: see MechanicalSystem::commit_step). */
+    void commit_step(const bool new_step = true);
     /** The read-only view of the current state for the postprocessors (Newton statistics of
         @p result and @p cutbacks, if given). */
     io::PostprocessInput<dim> postprocess_input(const solver::NewtonResult *result = nullptr,
