@@ -169,4 +169,11 @@ namespace ausroll::adaptivity
                               const TrilinosWrappers::MPI::Vector &,
                               const mechanics::MaterialPointStorage<2> &,
                               const DieDistance<2> &);
+  template bool mark_cells<3>(const AdaptivityParameters &,
+                              parallel::distributed::Triangulation<3> &,
+                              const Mapping<3> &,
+                              const DoFHandler<3> &,
+                              const TrilinosWrappers::MPI::Vector &,
+                              const mechanics::MaterialPointStorage<3> &,
+                              const DieDistance<3> &);
 } // namespace ausroll::adaptivity

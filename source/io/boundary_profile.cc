@@ -107,4 +107,5 @@ namespace ausroll::io
   }
 
   template class BoundaryProfile<2>;
+  template class BoundaryProfile<3>;
 } // namespace ausroll::io

@@ -167,4 +167,5 @@ namespace ausroll::io
   }
 
   template class LineProbes<2>;
+  template class LineProbes<3>;
 } // namespace ausroll::io

@@ -55,4 +55,6 @@ namespace ausroll::scene
 
   template void   Scene<2>::write_checkpoint(const double);
   template double Scene<2>::restore_checkpoint_state();
+  template void   Scene<3>::write_checkpoint(const double);
+  template double Scene<3>::restore_checkpoint_state();
 } // namespace ausroll::scene

@@ -1,29 +1,62 @@
 #include <ausroll/scene/scene.h>
 
+#include <ausroll/core/exceptions.h>
+
 #include <exception>
 #include <memory>
 
 namespace ausroll::scene
 {
+  namespace
+  {
+    /** InputError naming the first entry of @p parameters that has no meaning in 3D. */
+    void require_three_dimensional_settings(const SceneParameters &parameters)
+    {
+      const std::string why = " is planar (2D only); with a three-dimensional Geometry/Type ";
+      if (parameters.model.planar_model != mechanics::PlanarModel::plane_strain)
+        throw InputError("Model/Planar model" + why
+                         + "leave it at its default 'plane strain' (it is ignored in 3D)");
+      if (parameters.contact.curvature_tangent)
+        throw InputError("Contact/Curvature tangent" + why + "set it to false");
+      if (!parameters.postprocess.boundary_profile.boundary_ids.empty())
+        throw InputError("Postprocess/Boundary profile/Boundary ids" + why
+                         + "leave it empty (no 3D profile yet)");
+    }
+
+    template <int dim>
+    void run_scene_in(const SceneParameters &parameters, const MPI_Comm comm, const bool resume)
+    {
+      std::unique_ptr<Scene<dim>> scene = std::make_unique<Scene<dim>>(parameters, comm, resume);
+      try
+      {
+        scene->run();
+      }
+      catch (...)
+      {
+        // Destroy the scene while the exception is handled (not in flight), so that its timers
+        // and output close normally; then pass the error on.
+        const std::exception_ptr error = std::current_exception();
+        scene.reset();
+        std::rethrow_exception(error);
+      }
+    }
+  } // namespace
+
   void run_scene(const std::string                    &parameter_file,
                  const MPI_Comm                        comm,
                  const bool                            resume,
                  const std::vector<ParameterOverride> &overrides)
   {
-    const SceneParameters     parameters = read_parameter_file(parameter_file, overrides);
-    std::unique_ptr<Scene<2>> scene = std::make_unique<Scene<2>>(parameters, comm, resume);
-    try
+    const SceneParameters parameters = read_parameter_file(parameter_file, overrides);
+    // A three-dimensional `Geometry/Type` runs Scene<3>; the planar shapes (and a mesh file)
+    // run Scene<2>.
+    if (parameters.geometry.dimension() == 3)
     {
-      scene->run();
+      require_three_dimensional_settings(parameters);
+      run_scene_in<3>(parameters, comm, resume);
     }
-    catch (...)
-    {
-      // Destroy the scene while the exception is handled (not in flight), so that its timers
-      // and output close normally; then pass the error on.
-      const std::exception_ptr error = std::current_exception();
-      scene.reset();
-      std::rethrow_exception(error);
-    }
+    else
+      run_scene_in<2>(parameters, comm, resume);
   }
 
 } // namespace ausroll::scene

@@ -70,7 +70,7 @@ namespace ausroll::scene
                                                                       time,
                                                                       *timer,
                                                                       newton_log);
-      if (parameters.contact.curvature_tangent)
+      if (dim == 2 && parameters.contact.curvature_tangent)
         equilibrium->curvature_tangent = &curved_die_tangent;
       system.setup_system();
       setup_dof_dependents();
@@ -110,11 +110,13 @@ namespace ausroll::scene
         system.mapping,
         [this](const Point<dim> &x) { return kinematics.volume_factor(x); },
         system.min_cell_diameter);
-    if (contact.active())
-    {
-      curved_die_tangent.setup(system.mapping, system.dof_handler);
-      non_candidate_penetration.setup(system.mapping, system.dof_handler);
-    }
+    // The curvature tangent and the non-candidate penetration check are planar (2D only).
+    if constexpr (dim == 2)
+      if (contact.active())
+      {
+        curved_die_tangent.setup(system.mapping, system.dof_handler);
+        non_candidate_penetration.setup(system.mapping, system.dof_handler);
+      }
   }
 
   template <int dim>
@@ -285,19 +287,20 @@ namespace ausroll::scene
     io::write_regression_line(regression_log, step_number, row);
 
     check_distortion();
-    if (contact.active())
-    {
-      // a boundary that may not touch a die passes through it
-      const std::string penetration
-          = non_candidate_penetration.check(contact,
-                                            system.solution_ghosted,
-                                            step.time,
-                                            step_number,
-                                            1e-2 * system.min_cell_diameter,
-                                            comm);
-      if (!penetration.empty())
-        log << "  warning: " << penetration << std::endl;
-    }
+    if constexpr (dim == 2)
+      if (contact.active())
+      {
+        // a boundary that may not touch a die passes through it
+        const std::string penetration
+            = non_candidate_penetration.check(contact,
+                                              system.solution_ghosted,
+                                              step.time,
+                                              step_number,
+                                              1e-2 * system.min_cell_diameter,
+                                              comm);
+        if (!penetration.empty())
+          log << "  warning: " << penetration << std::endl;
+      }
 
     const double t_end = parameters.loading.end_time;
     if (parameters.adaptivity.interval > 0 && step_number % parameters.adaptivity.interval == 0
@@ -374,4 +377,5 @@ namespace ausroll::scene
   }
 
   template class Scene<2>;
+  template class Scene<3>;
 } // namespace ausroll::scene

@@ -54,4 +54,8 @@ namespace ausroll::scene
                             const dealii::Triangulation<2> &,
                             const mechanics::BoundaryConditions<2> &,
                             const contact::ContactOperator<2> &);
+  template void check_setup(const SceneParameters &,
+                            const dealii::Triangulation<3> &,
+                            const mechanics::BoundaryConditions<3> &,
+                            const contact::ContactOperator<3> &);
 } // namespace ausroll::scene

@@ -68,13 +68,15 @@ namespace ausroll::solver
       detail_log << "      contact: " << changes << " status change" << (changes > 1 ? "s" : "")
                  << ", re-assembling" << std::endl;
     }
-    if (with_matrix && contact.active() && curvature_tangent != nullptr)
-      curvature_tangent->add_to(contact,
-                                system.newton_constraints,
-                                system.solution_ghosted,
-                                system.residual_ghosted,
-                                time,
-                                system.system_matrix);
+    // The curvature tangent is planar (2D only; Scene<3> leaves curvature_tangent null).
+    if constexpr (dim == 2)
+      if (with_matrix && contact.active() && curvature_tangent != nullptr)
+        curvature_tangent->add_to(contact,
+                                  system.newton_constraints,
+                                  system.solution_ghosted,
+                                  system.residual_ghosted,
+                                  time,
+                                  system.system_matrix);
     // Force level: external loads and reactions (residual at prescribed DoFs).
     last_residual_norm = system.free_residual.l2_norm();
     last_reference_force = std::max(system.external_force.l2_norm(), system.reaction_norm());
@@ -94,4 +96,5 @@ namespace ausroll::solver
   }
 
   template class EquilibriumProblem<2>;
+  template class EquilibriumProblem<3>;
 } // namespace ausroll::solver

@@ -64,6 +64,29 @@ ausroll_add_check(NAME contact_block_press
   ARGS out/history.csv --value die_punch_force_y 1 -4615.384615 1e-9
        --value die_punch_force_x 1 0 1e-9 --value die_punch_slip_nodes 1 17 0)
 
+# 3D (Scene<3>) block in uniaxial compression by a prescribed top displacement, J2 with linear
+# hardening: reaction and lateral displacements on the elastic and the hardening branch against the
+# closed form (round-off tolerance: the state is homogeneous and radial return exact).
+ausroll_add_check(NAME scene3d_block_hardening
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/block3d_hardening.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_history.py
+  ARGS out/history.csv --value reaction_3_y 0.25 -8400 1e-9
+       --value corner_ux 0.25 0.003 1e-9 --value corner_uz 0.25 0.0012 1e-9
+       --value reaction_3_y 0.5 -9634.123223 1e-9
+       --value reaction_3_y 1 -9713.744076 1e-9
+       --value corner_ux 1 0.01768720379 1e-9 --value corner_uz 1 0.007074881517 1e-9
+       --value reaction_3_x 1 0 1e-9 --value reaction_3_z 1 0 1e-9)
+
+# 3D (Scene<3>) block pressed by a frictionless plane die: uniform stress, so the die force is
+# exact (round-off tolerance) and balanced by the base reaction; all top nodes slip.
+ausroll_add_check(NAME scene3d_block_plane_die
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/block3d_plane_die.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_history.py
+  ARGS out/history.csv --value die_punch_force_y 0.25 -2940 1e-9
+       --value die_punch_force_y 1 -16800 1e-9 --value reaction_2_y 1 16800 1e-9
+       --value die_punch_force_x 1 0 1e-9 --value die_punch_force_z 1 0 1e-9
+       --value die_punch_z 1 0 0 --value die_punch_slip_nodes 1 15 0)
+
 # The same scene through a relative `include` run from another directory: same exact die force.
 ausroll_add_check(NAME include_relative_path
   PRM ${AUSROLL_CHECKS_DIR}/scenes/block_press_include.prm
@@ -313,6 +336,11 @@ function(ausroll_add_script_check)
     WORKING_DIRECTORY ${_dir})
   set_tests_properties(check/${C_NAME} PROPERTIES LABELS check TIMEOUT 900)
 endfunction()
+
+# 3D against 2D: a block extruded along z with u_z = 0 on both z faces, pressed by a frictionless
+# cylinder, reproduces the plane-strain 2D scene with a circle die (same x-y mesh): histories
+# within 1e-8 (the discrete problems are the same; measured equal to 10 digits). A few seconds.
+ausroll_add_script_check(NAME scene3d_plane_strain_cylinder SCRIPT ${AUSROLL_CHECKS_DIR}/check_plane_strain_3d.py)
 
 # Volumetric locking (prm/flat_punch.prm, rough flat punch, plane strain, small strain): Q1 F-bar
 # limit pressure within 3 % of Prandtl's (2 + pi) k (measured +1.7 %), Q1 with full integration

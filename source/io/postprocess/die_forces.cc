@@ -20,13 +20,18 @@ namespace ausroll::io::postprocess
         row.emplace_back(p + "force_" + std::string(1, "xyz"[d]), c.force[d]);
       row.emplace_back(p + "x", pose.reference_position()[0]);
       row.emplace_back(p + "y", pose.reference_position()[1]);
+      if constexpr (dim == 3)
+        row.emplace_back(p + "z", pose.reference_position()[2]);
       row.emplace_back(p + "angle", pose.angle() * 180. / M_PI);
       row.emplace_back(p + "stick_nodes", c.n_stick);
       row.emplace_back(p + "slip_nodes", c.n_slip);
       row.emplace_back(p + "contact_length", c.contact_length);
       row.emplace_back(p + "contact_width", c.contact_width);
-      if (const contact::RollingMotion<dim> *rolling = die.rolling_motion())
-        rolling_columns(*rolling, input.time, Tensor<1, 2>({c.force[0], c.force[1]}), p, row);
+      // The rolling columns are planar (line of centres in the x-y plane); in 3D they are not
+      // written.
+      if constexpr (dim == 2)
+        if (const contact::RollingMotion<dim> *rolling = die.rolling_motion())
+          rolling_columns(*rolling, input.time, Tensor<1, 2>({c.force[0], c.force[1]}), p, row);
     }
   }
 
@@ -50,4 +55,5 @@ namespace ausroll::io::postprocess
   }
 
   template class DieForces<2>;
+  template class DieForces<3>;
 } // namespace ausroll::io::postprocess

@@ -86,4 +86,7 @@ namespace ausroll::io::postprocess
   template class LineProbeFiles<2>;
   template class BoundaryProfileFiles<2>;
   template class ContactFiles<2>;
+  template class LineProbeFiles<3>;
+  template class BoundaryProfileFiles<3>;
+  template class ContactFiles<3>;
 } // namespace ausroll::io::postprocess

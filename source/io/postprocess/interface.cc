@@ -96,4 +96,5 @@ namespace ausroll::io
   }
 
   template class PostprocessorSet<2>;
+  template class PostprocessorSet<3>;
 } // namespace ausroll::io

@@ -69,4 +69,6 @@ namespace ausroll::io::postprocess
 
   template class YieldExcess<2>;
   template class CellAverages<2>;
+  template class YieldExcess<3>;
+  template class CellAverages<3>;
 } // namespace ausroll::io::postprocess

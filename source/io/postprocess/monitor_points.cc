@@ -81,4 +81,5 @@ namespace ausroll::io::postprocess
   }
 
   template class MonitorPoints<2>;
+  template class MonitorPoints<3>;
 } // namespace ausroll::io::postprocess

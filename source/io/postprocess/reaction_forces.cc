@@ -50,4 +50,5 @@ namespace ausroll::io::postprocess
   }
 
   template class ReactionForces<2>;
+  template class ReactionForces<3>;
 } // namespace ausroll::io::postprocess

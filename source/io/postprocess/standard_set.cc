@@ -42,4 +42,11 @@ namespace ausroll::io
                                const double,
                                const unsigned int,
                                const MPI_Comm);
+  template std::unique_ptr<PostprocessorSet<3>>
+  make_standard_postprocessors(const OutputParameters &,
+                               const PostprocessParameters &,
+                               const double,
+                               const double,
+                               const unsigned int,
+                               const MPI_Comm);
 } // namespace ausroll::io

@@ -30,4 +30,6 @@ namespace ausroll::io::postprocess
 
   template class StepStatistics<2>;
   template class AppliedPressures<2>;
+  template class StepStatistics<3>;
+  template class AppliedPressures<3>;
 } // namespace ausroll::io::postprocess

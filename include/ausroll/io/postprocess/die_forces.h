@@ -14,13 +14,14 @@ namespace ausroll::io::postprocess
 {
   /**
    * History columns of every die of `Contact` in order, prefix `die_<Name>_` (`Contact/Die N/
-   * Name`): `force_x`, `force_y` (the force of the die on the workpiece, N), `x`, `y`, `angle`
-   * (the die pose: position of its reference point and rotation in degrees), `stick_nodes`,
+   * Name`): `force_x`, `force_y` (3D: and `force_z`; the force of the die on the workpiece, N),
+   * `x`, `y` (3D: and `z`), `angle` (the die pose: position of its reference point and rotation
+   * in degrees), `stick_nodes`,
    * `slip_nodes`, `contact_length` (extent of the closed nodes' die coordinate s, along the die
    * surface) and `contact_width` (extent of the closed nodes' current positions along the
    * die-frame x axis: for a die pressed along y the contact width, the half-width a in a half
-   * model with the symmetry axis at x = 0). A rolling die adds, right after its block, the
-   * columns of rolling_columns().
+   * model with the symmetry axis at x = 0). In 2D a rolling die adds, right after its block, the
+   * columns of rolling_columns() (not written in 3D).
    */
   template <int dim>
   class DieForces : public Postprocessor<dim>
