@@ -614,10 +614,13 @@ ausroll_add_parallel_check(NAME scene3d_thick_cylinder_np2
   PRM ${CMAKE_CURRENT_BINARY_DIR}/thick_cylinder_3d_np2.prm HISTORY out/history.csv)
 ausroll_add_parallel_check(NAME scene3d_oblique_slide_np2
   PRM ${CMAKE_CURRENT_BINARY_DIR}/block3d_oblique_slide_np2.prm HISTORY out/history.csv)
-foreach(_scene block3d_hardening block3d_plane_die cylinder_block_3d)
-  ausroll_add_parallel_check(NAME scene3d_${_scene}_np2
-    PRM ${AUSROLL_CHECKS_DIR}/scenes/${_scene}.prm HISTORY out/history.csv)
-endforeach()
+ausroll_add_parallel_check(NAME scene3d_block_hardening_np2
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/block3d_hardening.prm HISTORY out/history.csv)
+ausroll_add_parallel_check(NAME scene3d_block_plane_die_np2
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/block3d_plane_die.prm HISTORY out/history.csv)
+# the 3D half of check/scene3d_plane_strain_cylinder
+ausroll_add_parallel_check(NAME scene3d_plane_strain_cylinder_np2
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/cylinder_block_3d.prm HISTORY out/history.csv)
 # 3D checkpoint/restart: the oblique slide killed after step 9 (in the stick-to-slip transition;
 # checkpoints every 2 steps: resumes from step 8 with the contact statuses and slip directions)
 # and resumed ends identical (1e-10) to the uninterrupted run.
