@@ -50,13 +50,15 @@ namespace ausroll::geometry
         "arc, 2 edge on the x axis, 3 edge on the y axis; rectangle: 0 left, 1 right, "
         "2 bottom, 3 top; quarter disk (the quarter below and right of the centre): "
         "0 arc, 1 top edge, 2 edge on the vertical axis; gear tooth: 0 tooth outline, 1 inner "
-        "arc, 2 side cuts; ring (full annulus): 0 inner circle, 1 outer circle. 3D shapes: "
+        "arc, 2 side cuts; ring (full annulus): 0 inner circle, 1 outer circle (a sector: 2 cut "
+        "at angle 0, 3 cut at the Sector angle). 3D shapes: "
         "block: 0 x = x_min, 1 x = x_max, 2 y = y_min, 3 y = y_max, 4 z = z_min, 5 z = z_max "
         "(with the lower corner at the origin 0, 2, 4 are the symmetry planes x = 0, y = 0, "
         "z = 0); quarter cylinder (x >= 0, y >= 0, axis z): 0 symmetry plane x = 0, 1 symmetry "
         "plane y = 0, 2 mantle, 3 end z = 0, 4 end z = Length; thick ring (the Ring annulus, "
         "upper half z >= 0 of the thickness): 0 bore, 1 rim, 2 side face z = Thickness/2, "
-        "3 symmetry face z = 0; extruded gear tooth (the Gear tooth sector, upper half z >= 0 "
+        "3 symmetry face z = 0 (a sector: 4 cut at angle 0, 5 cut at the "
+        "Sector angle); extruded gear tooth (the Gear tooth sector, upper half z >= 0 "
         "of the face width): 0 tooth outline, 1 inner arc, 2 side cuts (as in 2D), 3 face end "
         "z = Face width/2, 4 symmetry face z = 0. mesh file: the ids stored in the file (2D or "
         "3D).");
@@ -115,6 +117,14 @@ namespace ausroll::geometry
                       Patterns::Integer(3),
                       "Coarse cells along the circumference (24: 15 degree spacing).");
     prm.declare_entry("Cells radially", "4", Patterns::Integer(1), "Coarse cells across the wall.");
+    prm.declare_entry(
+        "Sector angle",
+        "360",
+        Patterns::Double(0., 360.),
+        "360: the full annulus; less: the sector 0 <= angle <= Sector angle "
+        "(degrees, counter-clockwise from +x about Center; Cells around then spans "
+        "the sector) with its cut edges as symmetry boundaries: ids 2 (angle 0) and 3 "
+        "(Sector angle) in 2D, 4 and 5 for Type = thick ring.");
     prm.leave_subsection();
 
     prm.enter_subsection("Block");
@@ -213,6 +223,7 @@ namespace ausroll::geometry
     ring_outer_radius = prm.get_double("Outer radius");
     ring_cells_around = prm.get_integer("Cells around");
     ring_cells_radially = prm.get_integer("Cells radially");
+    ring_sector_angle = prm.get_double("Sector angle");
     prm.leave_subsection();
 
     prm.enter_subsection("Rectangle");
@@ -253,6 +264,7 @@ namespace ausroll::geometry
       require(ring_outer_radius > ring_inner_radius,
               "Geometry/Ring/Outer radius",
               "must be larger than Inner radius");
+      require(ring_sector_angle > 0., "Geometry/Ring/Sector angle", "must be positive");
     }
     if (type == WorkpieceType::rectangle)
       require(lower_left[0] < upper_right[0] && lower_left[1] < upper_right[1],

@@ -52,20 +52,24 @@ namespace ausroll::geometry
     }
 
     /**
-     * Full annulus a <= r <= b about the centre c: a polar grid of `Cells radially` x
-     * `Cells around` cells whose last angular column closes onto the first (shared vertices, no
-     * seam). Boundary ids: 0 inner circle, 1 outer circle.
+     * Annulus a <= r <= b about the centre c: a polar grid of `Cells radially` x `Cells around`
+     * cells. The full annulus (`Sector angle` = 360) closes its last angular column onto the
+     * first (shared vertices, no seam); a sector 0 <= angle <= `Sector angle` is open. Boundary
+     * ids: 0 inner circle, 1 outer circle; a sector's cut edges 2 (angle 0) and 3 (its angle).
      */
     void ring(const GeometryParameters &p, Triangulation<2> &coarse)
     {
-      const unsigned int    n_r = p.ring_cells_radially, n_t = p.ring_cells_around;
+      const unsigned int n_r = p.ring_cells_radially, n_t = p.ring_cells_around;
+      const bool         full = p.ring_sector_angle >= 360.;
+      const double sector = full ? 2. * numbers::PI : p.ring_sector_angle * numbers::PI / 180.;
+      const unsigned int    columns = full ? n_t : n_t + 1; // vertices around
       std::vector<Point<2>> vertices;
       for (unsigned int i = 0; i <= n_r; ++i)
-        for (unsigned int j = 0; j < n_t; ++j)
+        for (unsigned int j = 0; j < columns; ++j)
         {
           const double r
               = p.ring_inner_radius + (p.ring_outer_radius - p.ring_inner_radius) * i / double(n_r);
-          const double phi = 2. * numbers::PI * j / double(n_t);
+          const double phi = sector * j / double(n_t);
           vertices.emplace_back(p.ring_center
                                 + Tensor<1, 2>({r * std::cos(phi), r * std::sin(phi)}));
         }
@@ -75,16 +79,28 @@ namespace ausroll::geometry
         for (unsigned int j = 0; j < n_t; ++j)
         {
           CellData<2>        cell;
-          const unsigned int jn = (j + 1) % n_t;
-          cell.vertices = {i * n_t + j, (i + 1) * n_t + j, i * n_t + jn, (i + 1) * n_t + jn};
+          const unsigned int jn = (j + 1) % columns;
+          cell.vertices
+              = {i * columns + j, (i + 1) * columns + j, i * columns + jn, (i + 1) * columns + jn};
           cells.push_back(cell);
         }
       coarse.create_triangulation(vertices, cells, SubCellData());
       const double mid = 0.5 * (p.ring_inner_radius + p.ring_outer_radius);
+      const double tol = 1e-8 * p.ring_outer_radius;
       for (const auto &cell : coarse.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary())
-            face->set_boundary_id(face->center().distance(p.ring_center) < mid ? 0 : 1);
+          {
+            const Tensor<1, 2> x = face->center() - p.ring_center;
+            // a cut edge is radial: its centre lies on the ray at angle 0 or at the sector angle
+            const Tensor<1, 2> end({std::cos(sector), std::sin(sector)});
+            if (!full && std::abs(x[1]) < tol && x[0] > 0.)
+              face->set_boundary_id(2);
+            else if (!full && std::abs(x[0] * end[1] - x[1] * end[0]) < tol && x * end > 0.)
+              face->set_boundary_id(3);
+            else
+              face->set_boundary_id(x.norm() < mid ? 0 : 1);
+          }
     }
 
     void rectangle(const GeometryParameters &p, Triangulation<2> &coarse)
@@ -181,8 +197,9 @@ namespace ausroll::geometry
     }
 
     /**
-     * `Geometry/Type = thick ring`: the `Ring` annulus extruded over 0 <= z <= Thickness / 2.
-     * Boundary ids: 0 bore, 1 rim (from 2D), 2 side face, 3 symmetry face z = 0.
+     * `Geometry/Type = thick ring`: the `Ring` annulus (or sector) extruded over
+     * 0 <= z <= Thickness / 2. Boundary ids: 0 bore, 1 rim (from 2D), 2 side face, 3 symmetry
+     * face z = 0, a sector's cut faces 4 (angle 0) and 5 (the sector angle).
      */
     void thick_ring(const GeometryParameters &p, Triangulation<3> &coarse)
     {
@@ -201,6 +218,10 @@ namespace ausroll::geometry
               face->set_boundary_id(ids::symmetry);
             else if (std::abs(z - half) < tol)
               face->set_boundary_id(ids::side);
+            else if (face->boundary_id() == 2) // a sector's cut faces (2D ids 2, 3)
+              face->set_boundary_id(ids::cut_start);
+            else if (face->boundary_id() == 3)
+              face->set_boundary_id(ids::cut_end);
           }
     }
 

@@ -199,6 +199,50 @@ TEST(Workpiece3d, ThickRingOnCirclesVolumeAndAreas)
             1e-6);
 }
 
+// Thick ring sector (Ring/Sector angle = 60, centre off the origin) after 2 refinements: the
+// volume, bore, rim, side, symmetry and the two cut faces (ids 4, 5) against the analytic values
+// (1e-6: Q2 mapping of the circles), the cut faces planar through the centre at 0 and 60 degrees.
+TEST(Workpiece3d, ThickRingSectorVolumeAndCutFaces)
+{
+  const double             a = 1., b = 2., h = 0.75, phi = M_PI / 3.;
+  const GeometryParameters p = parse("set Type = thick ring\nset Global refinements = 2\n"
+                                     "subsection Ring\nset Center = 0.5, -0.25\n"
+                                     "set Inner radius = 1\nset Outer radius = 2\n"
+                                     "set Cells around = 4\nset Cells radially = 2\n"
+                                     "set Sector angle = 60\nend\n"
+                                     "subsection Thick ring\nset Thickness = 1.5\n"
+                                     "set Layers = 1\nend");
+  Triangulation<3>         tria;
+  create_workpiece(p, tria);
+  namespace ids = boundary_ids_3d::thick_ring;
+  const Tensor<1, 3> c({0.5, -0.25, 0.});
+  const Tensor<1, 3> n_end({-std::sin(phi), std::cos(phi), 0.});
+  double             off_plane = 0.;
+  for (const auto &cell : tria.active_cell_iterators())
+    for (const auto &face : cell->face_iterators())
+      if (face->at_boundary()
+          && (face->boundary_id() == ids::cut_start || face->boundary_id() == ids::cut_end))
+        for (const unsigned int v : face->vertex_indices())
+        {
+          const Tensor<1, 3> d = face->vertex(v) - c;
+          off_plane = std::max(off_plane,
+                               std::abs(face->boundary_id() == ids::cut_start ? d[1] : d * n_end));
+        }
+  EXPECT_LT(off_plane, 1e-12);
+  const auto [volume, area] = measure(tria, 2);
+  const double section = 0.5 * phi * (b * b - a * a);
+  EXPECT_NEAR(volume, section * h, 1e-6 * section * h);
+  EXPECT_LT(area_error(area,
+                       {{ids::bore, phi * a * h},
+                        {ids::rim, phi * b * h},
+                        {ids::side, section},
+                        {ids::symmetry, section},
+                        {ids::cut_start, (b - a) * h},
+                        {ids::cut_end, (b - a) * h}},
+                       section),
+            1e-6);
+}
+
 namespace
 {
   /** The thesis tooth with a 0.75 mm root fillet, @p teeth teeth, meshed in 2D or extruded. */

@@ -45,10 +45,11 @@ namespace ausroll::geometry
     {
       constexpr unsigned int symmetry_x = 0, symmetry_y = 1, mantle = 2, bottom = 3, top = 4;
     } // namespace quarter_cylinder
-    /** Thick ring: bore, rim, side face z = Thickness / 2, symmetry face z = 0. */
+    /** Thick ring: bore, rim, side face z = Thickness / 2, symmetry face z = 0; a sector
+        (`Ring/Sector angle` < 360) also has its cut faces at angle 0 and at the sector angle. */
     namespace thick_ring
     {
-      constexpr unsigned int bore = 0, rim = 1, side = 2, symmetry = 3;
+      constexpr unsigned int bore = 0, rim = 1, side = 2, symmetry = 3, cut_start = 4, cut_end = 5;
     } // namespace thick_ring
     /** Extruded gear tooth: the 2D ids 0 outline, 1 inner arc, 2 side cuts on the lateral faces;
         3 face end z = Face width / 2, 4 symmetry face z = 0. */
@@ -85,11 +86,12 @@ namespace ausroll::geometry
     // subsection `Gear tooth`
     GearToothParameters gear_tooth; ///< involute tooth sector (Type = gear tooth)
     // subsection `Ring` (full annulus; boundary ids 0 inner circle, 1 outer circle)
-    dealii::Point<2> ring_center{0., 0.};     ///< `Center`
-    double           ring_inner_radius = 1.;  ///< `Inner radius`
-    double           ring_outer_radius = 2.;  ///< `Outer radius`
-    unsigned int     ring_cells_around = 24;  ///< `Cells around` the circumference (coarse mesh)
-    unsigned int     ring_cells_radially = 4; ///< `Cells radially` across the wall (coarse mesh)
+    dealii::Point<2> ring_center{0., 0.};      ///< `Center`
+    double           ring_inner_radius = 1.;   ///< `Inner radius`
+    double           ring_outer_radius = 2.;   ///< `Outer radius`
+    unsigned int     ring_cells_around = 24;   ///< `Cells around` the circumference (coarse mesh)
+    unsigned int     ring_cells_radially = 4;  ///< `Cells radially` across the wall (coarse mesh)
+    double           ring_sector_angle = 360.; ///< `Sector angle` (degrees; 360: full annulus)
 
     // subsection `Block` (dim = 3)
     dealii::Point<3>          block_lower{0., 0., 0.}; ///< `Lower corner`
