@@ -72,7 +72,7 @@ def main():
         lines = open(f).read().splitlines()
         t = float(lines[0].split("=")[1].split(";")[0])
         t_near = min(history, key=lambda th: abs(th - t))
-        if abs(t_near - t) > 1e-9 * max(1.0, abs(t)):
+        if abs(t_near - t) > 1e-8 * max(1.0, abs(t)):
             print(f"check_hertz_3d.py: no history row at time {t}", file=sys.stderr)
             return 2
         row = history[t_near]
