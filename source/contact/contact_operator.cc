@@ -797,7 +797,8 @@ namespace ausroll::contact
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     std::ofstream out(filename);
-    out << "# time = " << time;
+    // the time to the digits of history.csv, so that a checker can find the row of this file
+    out << std::setprecision(10) << "# time = " << time;
     if constexpr (dim == 2)
       out << "; status: 0 open, 1 stick, 2 slip; p_n, t_t in MPa, R_n, R_t in N\n"
           << "die,s,X,Y,x,y,gap,p_n,t_t,R_n,R_t,status\n";
@@ -805,7 +806,6 @@ namespace ausroll::contact
       out << "; status: 0 open, 1 stick, 2 slip; p_n, t_1, t_2 in MPa, R_n, R_t1, R_t2 in N "
              "(along the die tangents)\n"
           << "die,s1,s2,X,Y,Z,x,y,z,gap,p_n,t_1,t_2,R_n,R_t1,R_t2,status\n";
-    out << std::setprecision(10);
     for (const auto &row : all)
     {
       out << dies[static_cast<unsigned int>(row[0])]->name;
