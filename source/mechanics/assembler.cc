@@ -8,6 +8,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
+#include <cstring>
 #include <mutex>
 #include <sstream>
 
@@ -81,6 +83,10 @@ namespace ausroll::mechanics
     const AffineConstraints<double>     *newton = nullptr;
     const RowTransforms<dim>            *row_transforms = nullptr;
     const AssemblyTargets               *targets = nullptr;
+    // the cache to read the cell part from (reuse) or to write it to (store)
+    AssemblyCache *cache = nullptr;
+    bool           reuse = false;
+    bool           store = false;
 
     // flags
     bool need_matrix = false;
@@ -796,9 +802,37 @@ namespace ausroll::mechanics
     copy.ok = true;
     copy.min_jacobian = 1e300;
     cell->get_dof_indices(copy.dofs);
-    assemble_cell(cell, setup, scratch.cell, scratch.f_bar, copy);
-    if (!copy.ok)
-      return;
+    const std::size_t n_dofs = setup.n_dofs;
+    const std::size_t index = cell->active_cell_index();
+    if (setup.reuse)
+    {
+      // the cell part of the cached assembly at this very state (AssemblyCache)
+      const AssemblyCache &cache = *setup.cache;
+      if (setup.need_matrix)
+        std::copy_n(cache.matrices.begin() + index * n_dofs * n_dofs,
+                    n_dofs * n_dofs,
+                    &copy.cell_matrix(0, 0));
+      std::copy_n(cache.residuals.begin() + index * n_dofs, n_dofs, copy.cell_residual.begin());
+      copy.cell_external = 0.;
+      copy.min_jacobian = cache.min_jacobian[index];
+    }
+    else
+    {
+      assemble_cell(cell, setup, scratch.cell, scratch.f_bar, copy);
+      if (!copy.ok)
+        return;
+      if (setup.store)
+      {
+        // each cell writes its own slots: safe on WorkStream's threads
+        AssemblyCache &cache = *setup.cache;
+        if (setup.need_matrix)
+          std::copy_n(&copy.cell_matrix(0, 0),
+                      n_dofs * n_dofs,
+                      cache.matrices.begin() + index * n_dofs * n_dofs);
+        std::copy_n(copy.cell_residual.begin(), n_dofs, cache.residuals.begin() + index * n_dofs);
+        cache.min_jacobian[index] = copy.min_jacobian;
+      }
+    }
     assemble_face_loads(cell, setup, scratch.face, copy);
     copy.cell_residual -= copy.cell_external;
     apply_row_transforms(setup, copy);
@@ -812,7 +846,8 @@ namespace ausroll::mechanics
                                           const AffineConstraints<double>     &hanging,
                                           const AffineConstraints<double>     &newton,
                                           const RowTransforms<dim>            *row_transforms,
-                                          const AssemblyTargets               &targets) const
+                                          const AssemblyTargets               &targets,
+                                          AssemblyCache                       *cache) const
   {
     Assert(targets.residual != nullptr && targets.external_force != nullptr, ExcInternalError());
 
@@ -826,6 +861,7 @@ namespace ausroll::mechanics
     setup.row_transforms = row_transforms;
     setup.targets = &targets;
     setup.need_matrix = targets.matrix != nullptr;
+    prepare_cache(dof_handler, solution, time, cache, setup);
 
     // The cell loop on the threads of DEAL_II_NUM_THREADS (step-44): the worker fills one cell's
     // CopyData, the copier adds it to the targets in cell order.
@@ -841,6 +877,12 @@ namespace ausroll::mechanics
         CopyData(setup.n_dofs));
 
     add_row_transform_offsets(dof_handler, setup);
+    if (setup.store)
+    {
+      // a failed assembly is never reused; a successful one is the state of the next reuse
+      cache->valid = setup.ok;
+      cache->with_matrix = setup.need_matrix;
+    }
 
     targets.residual->compress(VectorOperation::add);
     targets.external_force->compress(VectorOperation::add);
@@ -865,6 +907,52 @@ namespace ausroll::mechanics
       status.message = Utilities::MPI::broadcast(comm, setup.message, bad_rank);
     }
     return status;
+  }
+
+  template <int dim>
+  void Assembler<dim>::prepare_cache(const DoFHandler<dim>               &dof_handler,
+                                     const TrilinosWrappers::MPI::Vector &solution,
+                                     const double                         time,
+                                     AssemblyCache                       *cache,
+                                     Setup                               &setup) const
+  {
+    setup.cache = cache;
+    if (cache == nullptr)
+      return;
+    const std::size_t n_cells = dof_handler.get_triangulation().n_active_cells();
+    const std::size_t n_dofs = setup.n_dofs;
+    if (n_cells * (n_dofs * n_dofs + n_dofs + 1) * sizeof(double) > cache->max_bytes)
+    {
+      cache->valid = false;
+      cache->solution = {};
+      cache->matrices = {};
+      cache->residuals = {};
+      cache->min_jacobian = {};
+      return;
+    }
+    // the displacement with its ghost entries, compared bit for bit
+    const Epetra_MultiVector &values = solution.trilinos_vector();
+    const std::size_t         n_values = values.MyLength();
+    const double             *first = values[0];
+    setup.reuse = cache->valid && cache->cached_state == cache->state
+                  && cache->min_jacobian.size() == n_cells && cache->time == time
+                  && (cache->with_matrix || !setup.need_matrix)
+                  && cache->solution.size() == n_values
+                  && std::memcmp(cache->solution.data(), first, n_values * sizeof(double)) == 0;
+    if (setup.reuse)
+    {
+      ++cache->hits;
+      return;
+    }
+    ++cache->misses;
+    setup.store = true;
+    cache->valid = false;
+    cache->cached_state = cache->state;
+    cache->time = time;
+    cache->solution.assign(first, first + n_values);
+    cache->residuals.resize(n_cells * n_dofs);
+    cache->min_jacobian.resize(n_cells);
+    cache->matrices.resize(setup.need_matrix ? n_cells * n_dofs * n_dofs : 0);
   }
 
   template <int dim>

@@ -31,6 +31,7 @@ namespace ausroll::mechanics
   template <int dim>
   void MechanicalSystem<dim>::setup_system()
   {
+    ++assembly_cache.state;
     dof_handler.distribute_dofs(fe);
     owned_dofs = dof_handler.locally_owned_dofs();
     relevant_dofs = DoFTools::extract_locally_relevant_dofs(dof_handler);
@@ -79,6 +80,7 @@ namespace ausroll::mechanics
   template <int dim>
   void MechanicalSystem<dim>::initialize_material_points(const unsigned int points_per_cell)
   {
+    ++assembly_cache.state;
     material_points.initialize(triangulation.begin_active(), triangulation.end(), points_per_cell);
   }
 
@@ -106,6 +108,7 @@ namespace ausroll::mechanics
   template <int dim>
   void MechanicalSystem<dim>::start_step(const double predictor_ratio)
   {
+    ++assembly_cache.state;
     solution = step_start;
     if (predictor_ratio != 0.)
     {
@@ -119,6 +122,7 @@ namespace ausroll::mechanics
   template <int dim>
   void MechanicalSystem<dim>::restore_step_start()
   {
+    ++assembly_cache.state;
     solution = step_start;
     solution_ghosted = solution;
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -130,6 +134,7 @@ namespace ausroll::mechanics
   template <int dim>
   void MechanicalSystem<dim>::commit_step(const bool new_step)
   {
+    ++assembly_cache.state;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto &point : material_points.get_data(cell))
@@ -191,6 +196,7 @@ namespace ausroll::mechanics
         std::vector<const Vector *>{&solution_ghosted, &previous_ghosted});
     attach_data();
     triangulation.execute_coarsening_and_refinement();
+    ++assembly_cache.state;
 
     setup_system();
     unpack_data();
@@ -210,6 +216,7 @@ namespace ausroll::mechanics
   void MechanicalSystem<dim>::rebase_material_points(const Assembler<dim>              &assembler,
                                                      const material::ConstitutiveModel &model)
   {
+    ++assembly_cache.state;
     // with the deformation gradient the material sees (F-bar included): re-basing with the plain
     // F left every F-bar state off equilibrium by the difference, growing at every adaptation
     for (const auto &cell : dof_handler.active_cell_iterators())

@@ -52,7 +52,8 @@ namespace ausroll::solver
                                system.hanging_constraints,
                                system.newton_constraints,
                                contact.active() ? &contact.row_transforms() : nullptr,
-                               system.assembly_targets(with_matrix));
+                               system.assembly_targets(with_matrix),
+                               &system.assembly_cache);
       if (!status.ok)
       {
         message = status.message;

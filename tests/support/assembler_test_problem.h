@@ -87,6 +87,19 @@ namespace ausroll::test_support
   }
 
   /** The values of a (serial) Trilinos vector. */
+  /** A slipping node's row transform on DoFs 0, 1: matrix [[1, 0.3], [0, 1]], offset (2.5, 0). */
+  inline mechanics::RowTransforms<2> slipping_node_transform()
+  {
+    mechanics::RowTransforms<2>     transforms;
+    mechanics::NodalRowTransform<2> t;
+    t.dofs = {0, 1};
+    t.matrix[0][0] = t.matrix[1][1] = 1.;
+    t.matrix[0][1] = 0.3;
+    t.offset[0] = 2.5;
+    transforms.emplace(0, t);
+    return transforms;
+  }
+
   inline std::vector<double> values(const dealii::TrilinosWrappers::MPI::Vector &v)
   {
     std::vector<double> result(v.size());

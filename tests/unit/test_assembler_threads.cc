@@ -30,13 +30,7 @@ TEST(AssemblerThreads, TwoAndFourThreadsEqualOneThreadExactly)
     problem.u[i] = 0.01 * std::sin(0.37 * i);
 
   // a slipping node's row transform (matrix and constant offset) on DoFs 0, 1
-  mechanics::RowTransforms<2>     transforms;
-  mechanics::NodalRowTransform<2> t;
-  t.dofs = {0, 1};
-  t.matrix[0][0] = t.matrix[1][1] = 1.;
-  t.matrix[0][1] = 0.3;
-  t.offset[0] = 2.5;
-  transforms.emplace(0, t);
+  const mechanics::RowTransforms<2> transforms = test_support::slipping_node_transform();
 
   struct Result
   {

@@ -20,7 +20,9 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <array>
+#include <cstdint>
 #include <map>
+#include <vector>
 
 namespace ausroll::mechanics
 {
@@ -42,6 +44,33 @@ namespace ausroll::mechanics
     dealii::TrilinosWrappers::SparseMatrix *matrix = nullptr;
     /** Right-hand side -r of the Newton system, with inhomogeneities (with matrix). */
     dealii::TrilinosWrappers::MPI::Vector *rhs = nullptr;
+  };
+
+  /**
+   * The cell part (internal forces, material tangent, smallest det F) of the last assembly, which
+   * the next assembly reuses when it is at the same state: a contact status change (nested active
+   * set at a converged pass, active set at an iterate) changes the constraints and the friction
+   * row transforms but neither the displacement nor the material states, and re-assembling
+   * the cells would only repeat the material evaluations bit for bit. The Assembler decides:
+   * same displacement (bitwise, ghosts included), same time, same mesh, the tangent when asked
+   * for, and the same @ref state. The owner of the material points increments @ref state
+   * whenever they change other than through an assembly (commit, restore, transfer to a new
+   * mesh, re-basing): the trial states are then those of the cached evaluation. Face loads, row
+   * transforms and the condensation are done anew at every assembly. Kept only while it needs
+   * at most @ref max_bytes (3D meshes: usually off).
+   */
+  struct AssemblyCache
+  {
+    std::uint64_t       state = 0;             ///< the owner's counter of material-state changes
+    std::size_t         max_bytes = 64u << 20; ///< largest cache kept (bytes)
+    bool                valid = false;         ///< the arrays hold an assembly
+    bool                with_matrix = false;   ///< ... with the cell matrices
+    std::uint64_t       cached_state = 0;      ///< @ref state of the cached assembly
+    double              time = 0.;             ///< its time
+    std::vector<double> solution;              ///< its displacement (local and ghost entries)
+    std::vector<double> matrices, residuals;   ///< cell matrices and residuals by active cell index
+    std::vector<double> min_jacobian;          ///< smallest det F of each cell
+    unsigned long       hits = 0, misses = 0;  ///< statistics (reused / computed assemblies)
   };
 
   /** Outcome of an assembly, identical on all MPI ranks. */
@@ -116,6 +145,9 @@ namespace ausroll::mechanics
      * (ghosted) and time @p time (trial states are overwritten), and fill @p targets.
      * @p hanging holds the hanging-node constraints, @p newton the constraints of the Newton
      * increment (hanging nodes, Dirichlet, contact; inhomogeneous); @p row_transforms may be null.
+     * With a @p cache, the cell part of the last assembly is reused when the state is the same
+     * (see AssemblyCache; the targets are then identical to a full assembly's) and this
+     * assembly's cell part is kept for the next.
      */
     AssemblyStatus assemble(const dealii::DoFHandler<dim>               &dof_handler,
                             const dealii::TrilinosWrappers::MPI::Vector &solution,
@@ -124,7 +156,8 @@ namespace ausroll::mechanics
                             const dealii::AffineConstraints<double>     &hanging,
                             const dealii::AffineConstraints<double>     &newton,
                             const RowTransforms<dim>                    *row_transforms,
-                            const AssemblyTargets                       &targets) const;
+                            const AssemblyTargets                       &targets,
+                            AssemblyCache                               *cache = nullptr) const;
 
     /**
      * The deformation gradients the material points of @p cell see at the displacement
@@ -213,6 +246,14 @@ namespace ausroll::mechanics
         into free residual and rhs, once per node by the owner of its first DoF. */
     void add_row_transform_offsets(const dealii::DoFHandler<dim> &dof_handler,
                                    const Setup                   &setup) const;
+
+    /** Decide whether this assembly reuses the cell part of @p cache (same state, see
+        AssemblyCache) or computes it and stores it there; sets setup.reuse / setup.store. */
+    void prepare_cache(const dealii::DoFHandler<dim>               &dof_handler,
+                       const dealii::TrilinosWrappers::MPI::Vector &solution,
+                       const double                                 time,
+                       AssemblyCache                               *cache,
+                       Setup                                       &setup) const;
 
     /** The call-independent part of @p setup: flags, shape-function tables, F-bar n and E. */
     void fill_setup(Setup &setup) const;

@@ -136,5 +136,10 @@ namespace ausroll::mechanics
     MaterialPointStorage<dim> material_points; ///< states of the locally owned cells
 
     double min_cell_diameter = 1.; ///< smallest vertex distance of the mesh (all ranks)
+
+    /** The cell part of the last assembly for the next one at the same state (Assembler::
+        assemble); every method here that changes the material points or the mesh increments
+        its state counter. Code that changes the material points in another way must do so too. */
+    AssemblyCache assembly_cache;
   };
 } // namespace ausroll::mechanics
