@@ -19,7 +19,7 @@ Writes OUTPUT_DIR/flank_deviation_3d.csv (Z,R,d_n,u_t,u_z,p_n) and prints a summ
 max at the symmetry face z = 0 (mid-face) and at the face end, and d_n along z at the --radii
 (linear interpolation in R within each layer). With --compare-2d (the flank_deviation.csv of a 2D
 run, its last step) the mid-face profile is compared with the 2D profile on the 2D radii
-(max |d_n,3D(z = 0) - d_n,2D|). --plot draws d_n(R) for every layer and d_n(z) at the radii.
+(max |d_n,3D(z = 0) - d_n,2D|). --plot draws d_n(R) for every layer, d_n(z) at the radii and a map of d_n over the flank (z, R).
 """
 
 import argparse
@@ -81,7 +81,8 @@ def analyse(args):
         t = (math.cos(th) + sign * u * math.sin(th), math.sin(th) - sign * u * math.cos(th))
         tn = math.hypot(*t)
         u_t = ((x[0] - X[0]) * t[0] + (x[1] - X[1]) * t[1]) / tn
-        rows.append((round(X[2], 6), R, d_n, u_t, x[2] - X[2], p_n))
+        # reference z from single-precision VTU values: layers are >= 0.1 mm apart
+        rows.append((round(X[2], 2), R, d_n, u_t, x[2] - X[2], p_n))
     rows.sort()
     return time, rows, rp
 
@@ -151,7 +152,7 @@ def main():
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
 
-        fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
+        fig, axes = plt.subplots(1, 3, figsize=(16, 4.4), constrained_layout=True)
         cmap = plt.get_cmap("viridis")
         for i, z in enumerate(zs):
             c = cmap(i / max(len(zs) - 1, 1))
@@ -162,7 +163,7 @@ def main():
                          label="2D plane strain")
         axes[0].axvline(rp, color="gray", ls=":", lw=1)
         axes[0].set_xlabel("reference radius R (mm); dotted: pitch circle")
-        axes[0].set_ylabel("residual normal deviation d_n (um)")
+        axes[0].set_ylabel("normal deviation d_n (um)")
         axes[0].legend(fontsize=8)
         for R in args.radii:
             axes[1].plot(zs, [1000 * interpolate(by_z[z], R) for z in zs], "o-", ms=3,
@@ -170,7 +171,13 @@ def main():
         axes[1].set_xlabel("z (mm): 0 mid-face, right end the face end")
         axes[1].set_ylabel("d_n (um)")
         axes[1].legend(fontsize=8)
-        for ax in axes:
+        tri = axes[2].tricontourf([r[0] for r in rows], [r[1] for r in rows],
+                                  [1000 * r[2] for r in rows], levels=20, cmap="RdBu_r")
+        fig.colorbar(tri, ax=axes[2], label="d_n (um)")
+        axes[2].set_xlabel("z (mm)")
+        axes[2].set_ylabel("reference radius R (mm)")
+        axes[2].set_title("d_n over the flank", fontsize=9)
+        for ax in axes[:2]:
             ax.grid(alpha=0.3)
         fig.suptitle(f"{args.title} (t = {time:g})")
         fig.savefig(args.plot, dpi=110)
