@@ -21,4 +21,20 @@ namespace ausroll::geometry
     prm.declare_entry(
         "Dedendum", "-1", Patterns::Double(), "Dedendum (mm); negative: 1.25 module.");
   }
+
+  ToothProportions tooth_proportions(const double addendum,
+                                     const double dedendum,
+                                     const double pitch_tooth_thickness,
+                                     const double root_fillet_radius)
+  {
+    ToothProportions proportions;
+    if (addendum >= 0.)
+      proportions.addendum = addendum;
+    if (dedendum >= 0.)
+      proportions.dedendum = dedendum;
+    if (pitch_tooth_thickness > 0.)
+      proportions.pitch_tooth_thickness = pitch_tooth_thickness;
+    proportions.root_fillet_radius = root_fillet_radius;
+    return proportions;
+  }
 } // namespace ausroll::geometry

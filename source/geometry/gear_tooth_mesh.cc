@@ -348,13 +348,19 @@ namespace ausroll::geometry
   void create_extruded_gear_tooth_mesh(const GearToothParameters &p,
                                        const double               half_width,
                                        const unsigned int         layers,
-                                       Triangulation<3>          &coarse)
+                                       Triangulation<3>          &coarse,
+                                       const double               layer_ratio)
   {
     Triangulation<2> section;
     create_gear_tooth_mesh(p, section);
-    std::vector<double> z(layers + 1);
-    for (unsigned int i = 0; i <= layers; ++i)
-      z[i] = half_width * i / double(layers);
+    // layer i has the thickness h q^i, q^(layers - 1) = layer_ratio, the layers sum to half_width
+    const double        q = layers > 1 ? std::pow(layer_ratio, 1. / (layers - 1.)) : 1.;
+    std::vector<double> z(layers + 1, 0.);
+    for (unsigned int i = 1; i <= layers; ++i)
+      z[i] = z[i - 1] + std::pow(q, i - 1.);
+    for (double &zi : z)
+      zi *= half_width / z[layers];
+    z[layers] = half_width;
     // Lines along z through a vertex of the outline take the outline's manifold (they are
     // straight in every chart used here), interior ones the transfinite id.
     std::vector<types::manifold_id> priorities;

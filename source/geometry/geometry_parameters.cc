@@ -168,6 +168,12 @@ namespace ausroll::geometry
                       "width/2 of the tooth sector of subsection Gear tooth.");
     prm.declare_entry(
         "Layers", "2", Patterns::Integer(1, 1000), "Coarse cells through the half face width.");
+    prm.declare_entry("Layer ratio",
+                      "1",
+                      Patterns::Double(),
+                      "Thickness of the coarse layer at the face end over that of the layer at "
+                      "the symmetry face (> 0; geometric progression; < 1 grades the mesh towards "
+                      "the face end, 1 uniform layers).");
     prm.leave_subsection();
 
     prm.enter_subsection("Rectangle");
@@ -251,6 +257,7 @@ namespace ausroll::geometry
     prm.enter_subsection("Extruded gear tooth");
     gear_face_width = prm.get_double("Face width");
     gear_layers = prm.get_integer("Layers");
+    gear_layer_ratio = prm.get_double("Layer ratio");
     prm.leave_subsection();
     prm.leave_subsection();
 
@@ -287,7 +294,11 @@ namespace ausroll::geometry
     if (type == WorkpieceType::thick_ring)
       require(ring_thickness > 0., "Geometry/Thick ring/Thickness", "must be positive");
     if (type == WorkpieceType::extruded_gear_tooth)
+    {
       require(gear_face_width > 0., "Geometry/Extruded gear tooth/Face width", "must be positive");
+      require(
+          gear_layer_ratio > 0., "Geometry/Extruded gear tooth/Layer ratio", "must be positive");
+    }
   }
 
   unsigned int GeometryParameters::dimension() const

@@ -388,7 +388,8 @@ namespace ausroll::geometry
         create_extruded_gear_tooth_mesh(parameters.gear_tooth,
                                         0.5 * parameters.gear_face_width,
                                         parameters.gear_layers,
-                                        coarse);
+                                        coarse,
+                                        parameters.gear_layer_ratio);
     }
 
     triangulation.copy_triangulation(coarse);

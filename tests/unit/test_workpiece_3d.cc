@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <string>
 
 using namespace dealii;
@@ -372,6 +373,47 @@ TEST(Workpiece3d, ExtrudedGearToothMidPlaneEqualsTwoDimensionalMesh)
             1e-9);
   const double arc = p3.gear_tooth.inner_radius() * 2. * M_PI / p3.gear_tooth.n_teeth * 2. * h;
   EXPECT_NEAR(area.at(ids::inner_arc), arc, 1e-6 * arc);
+}
+
+// Graded layers (Layer ratio): 3 coarse layers with ratio 0.25 through the 3 mm half face have
+// the thicknesses h, h q, h q^2 with q = 0.5 (h = 3 / 1.75), i.e. the planes z = 0, 1.714,
+// 2.571, 3 mm (exact sums, 1e-12); one refinement halves each layer; the volume equals that of
+// uniform layers (1e-10: the same extruded section) and the face-end plane is still id 3.
+TEST(Workpiece3d, ExtrudedGearToothGradedLayers)
+{
+  GeometryParameters p = tooth(1, true);
+  p.gear_layers = 3;
+  p.gear_layer_ratio = 0.25;
+  p.global_refinements = 1;
+  Triangulation<3> graded, uniform;
+  create_workpiece(p, graded);
+  p.gear_layer_ratio = 1.;
+  create_workpiece(p, uniform);
+  std::set<long> planes;
+  for (const auto &x : graded.get_vertices())
+    planes.insert(std::lround(x[2] * 1e9));
+  const double        h = 3. / 1.75;
+  std::vector<double> expected;
+  for (const double z0 : {0., h, 1.5 * h})
+  {
+    const double dz = (z0 == 0. ? h : z0 == h ? 0.5 * h : 0.25 * h);
+    expected.push_back(z0);
+    expected.push_back(z0 + 0.5 * dz);
+  }
+  expected.push_back(3.);
+  ASSERT_EQ(planes.size(), expected.size());
+  unsigned int i = 0;
+  for (const long z : planes)
+    EXPECT_NEAR(z * 1e-9, expected[i++], 1e-9);
+  EXPECT_NEAR(
+      measure(graded, 2).first, measure(uniform, 2).first, 1e-10 * measure(uniform, 2).first);
+  for (const auto &cell : graded.active_cell_iterators())
+    for (const auto &face : cell->face_iterators())
+      if (face->at_boundary() && std::abs(face->center()[2] - 3.) < 1e-9)
+        EXPECT_EQ(face->boundary_id(), boundary_ids_3d::extruded_gear_tooth::face_end);
+  EXPECT_THROW(parse("set Type = extruded gear tooth\nsubsection Extruded gear tooth\n"
+                     "set Layer ratio = 0\nend"),
+               InputError);
 }
 
 // A 3D shape in a 2D run and a 2D shape in a 3D run are input errors naming Geometry/Type; bad

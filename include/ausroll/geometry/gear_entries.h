@@ -6,6 +6,8 @@
  */
 #pragma once
 
+#include <ausroll/geometry/involute_gear.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
@@ -21,4 +23,13 @@ namespace ausroll::geometry
   void declare_gear_size_entries(dealii::ParameterHandler &prm,
                                  const std::string        &default_teeth,
                                  const std::string        &teeth_documentation);
+
+  /**
+   * The ToothProportions of the entries `Addendum`, `Dedendum` (negative: the module-based
+   * default), `Tooth thickness` (not positive: half the circular pitch) and `Root fillet radius`.
+   */
+  ToothProportions tooth_proportions(double addendum,
+                                     double dedendum,
+                                     double pitch_tooth_thickness,
+                                     double root_fillet_radius);
 } // namespace ausroll::geometry

@@ -92,15 +92,18 @@ namespace ausroll::geometry
   /**
    * `Geometry/Type = extruded gear tooth`: the coarse tooth sector of create_gear_tooth_mesh()
    * extruded along z over 0 <= z <= @p half_width in @p layers layers of cells, into the empty
-   * @p coarse. Boundary ids: the 2D ids on the lateral faces (0 outline, 1 inner arc, 2 side
-   * cuts), 3 face end z = @p half_width, 4 symmetry face z = 0. Manifold ids as in 2D on the
-   * cells (2 transfinite), on the lateral faces and on the lines in the planes z = const (the 2D
-   * line ids); lines along z take the first of: a flank or fillet id, 1, flat, 2.
+   * @p coarse; the layer thicknesses form a geometric progression whose last (face end) over
+   * first (symmetry face) thickness is @p layer_ratio (1: uniform layers). Boundary ids: the 2D ids
+   * on the lateral faces (0 outline, 1 inner arc, 2 side cuts), 3 face end z = @p half_width, 4
+   * symmetry face z = 0. Manifold ids as in 2D on the cells (2 transfinite), on the lateral faces
+   * and on the lines in the planes z = const (the 2D line ids); lines along z take the first of: a
+   * flank or fillet id, 1, flat, 2.
    */
   void create_extruded_gear_tooth_mesh(const GearToothParameters &parameters,
                                        double                     half_width,
                                        unsigned int               layers,
-                                       dealii::Triangulation<3>  &coarse);
+                                       dealii::Triangulation<3>  &coarse,
+                                       double                     layer_ratio = 1.);
 
   /**
    * The 3D manifolds of the extruded tooth on @p tria (a copy of the coarse mesh made by

@@ -110,6 +110,7 @@ namespace ausroll::geometry
     // subsection `Extruded gear tooth` (dim = 3; cross-section from subsection `Gear tooth`)
     double       gear_face_width = 10.; ///< `Face width` (whole; the mesh is its half z >= 0)
     unsigned int gear_layers = 2;       ///< `Layers` of coarse cells through the half face width
+    double gear_layer_ratio = 1.; ///< `Layer ratio`: last (face end) over first layer thickness
 
     // local refinement towards a point (any shape)
     dealii::Point<2> refinement_point{0., 0.}; ///< `Refinement point`

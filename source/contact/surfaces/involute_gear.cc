@@ -54,15 +54,9 @@ namespace ausroll::contact::surfaces
   std::unique_ptr<const RigidSurface<2>>
   InvoluteGearParameters::create(const std::string &path) const
   {
-    constexpr double           degree = numbers::PI / 180.;
-    geometry::ToothProportions proportions;
-    if (addendum >= 0.)
-      proportions.addendum = addendum;
-    if (dedendum >= 0.)
-      proportions.dedendum = dedendum;
-    if (tooth_thickness > 0.)
-      proportions.pitch_tooth_thickness = tooth_thickness;
-    proportions.root_fillet_radius = fillet_radius;
+    constexpr double                 degree = numbers::PI / 180.;
+    const geometry::ToothProportions proportions
+        = geometry::tooth_proportions(addendum, dedendum, tooth_thickness, fillet_radius);
     try
     {
       const auto gear = geometry::InvoluteGear::from_pitch_or_module(

@@ -6,6 +6,7 @@
 #include <ausroll/contact/surfaces/torus.h>
 #include <ausroll/core/exceptions.h>
 #include <ausroll/core/parse_utilities.h>
+#include <ausroll/geometry/gear_entries.h>
 #include <ausroll/geometry/involute_gear.h>
 
 #include <deal.II/base/numbers.h>
@@ -132,6 +133,19 @@ namespace ausroll::contact::surfaces
                         "20",
                         Patterns::Double(0., 45.),
                         "involute gear: pressure angle (degrees).");
+      prm.declare_entry("Addendum",
+                        "-1",
+                        Patterns::Double(),
+                        "involute gear: addendum (mm); negative: 1 module.");
+      prm.declare_entry("Dedendum",
+                        "-1",
+                        Patterns::Double(),
+                        "involute gear: dedendum (mm); negative: 1.25 module.");
+      prm.declare_entry("Tooth thickness",
+                        "-1",
+                        Patterns::Double(),
+                        "involute gear: tooth thickness at the pitch circle (mm); negative: half "
+                        "the circular pitch.");
       prm.declare_entry("Root fillet radius",
                         "0",
                         Patterns::Double(0.),
@@ -184,6 +198,9 @@ namespace ausroll::contact::surfaces
       diametral_pitch = prm.get_double("Diametral pitch");
       module = prm.get_double("Module");
       pressure_angle = prm.get_double("Pressure angle");
+      addendum = prm.get_double("Addendum");
+      dedendum = prm.get_double("Dedendum");
+      tooth_thickness = prm.get_double("Tooth thickness");
       root_fillet_radius = prm.get_double("Root fillet radius");
       tip_radius = prm.get_double("Tip radius");
       tooth_axis_angle = prm.get_double("Tooth axis angle");
@@ -242,8 +259,8 @@ namespace ausroll::contact::surfaces
       }
       case Type::involute_gear:
       {
-        geometry::ToothProportions proportions;
-        proportions.root_fillet_radius = root_fillet_radius;
+        const geometry::ToothProportions proportions
+            = geometry::tooth_proportions(addendum, dedendum, tooth_thickness, root_fillet_radius);
         try
         {
           const auto gear = geometry::InvoluteGear::from_pitch_or_module(

@@ -49,6 +49,9 @@ namespace ausroll::contact::surfaces
     double                        diametral_pitch = 0.;    ///< `Diametral pitch` (0: Module)
     double                        module = 1.;             ///< `Module`
     double                        pressure_angle = 20.;    ///< `Pressure angle` (degrees)
+    double                        addendum = -1.;          ///< `Addendum` (< 0: 1 module)
+    double                        dedendum = -1.;          ///< `Dedendum` (< 0: 1.25 module)
+    double                        tooth_thickness = -1.;   ///< `Tooth thickness` (< 0: half pitch)
     double                        root_fillet_radius = 0.; ///< `Root fillet radius`
     double                        tip_radius = 0.;         ///< `Tip radius`
     double                        tooth_axis_angle = 0.;   ///< `Tooth axis angle` (degrees)
