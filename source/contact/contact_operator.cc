@@ -206,7 +206,7 @@ namespace ausroll::contact
       }
       if constexpr (dim == 3)
         if (n.current.status == ContactStatus::slip)
-          update_slip_direction(n);
+          update_slip_direction(n, !hold_changed);
       if (n.current.status != ContactStatus::open)
         ++closed;
     }
@@ -284,7 +284,7 @@ namespace ausroll::contact
   }
 
   template <int dim>
-  void ContactOperator<dim>::update_slip_direction(Node &n) const
+  bool ContactOperator<dim>::update_slip_direction(Node &n, const bool follow_slip) const
   {
     // The friction force opposes the slip of the node over the step so far (backward Euler in
     // the direction: d = slip / |slip|) once that slip is well defined, i.e. larger than
@@ -295,11 +295,19 @@ namespace ausroll::contact
       n.current.direction = n.next_direction;
       n.direction_pending = false;
     }
+    if (!follow_slip)
+      return false;
     const std::array<double, dim - 1> slip = slip_increment(n);
     const double                      size = magnitude(slip);
-    if (size > slip_length)
-      for (unsigned int a = 0; a < dim - 1; ++a)
-        n.current.direction[a] = slip[a] / size;
+    if (size <= slip_length)
+      return false;
+    double change = 0.;
+    for (unsigned int a = 0; a < dim - 1; ++a)
+    {
+      change = std::max(change, std::abs(slip[a] / size - n.current.direction[a]));
+      n.current.direction[a] = slip[a] / size;
+    }
+    return change > direction_tolerance;
   }
 
   template <int dim>
@@ -521,6 +529,24 @@ namespace ausroll::contact
         switch_status(n, target);
         if (n.owned)
           ++changes;
+      }
+      else if constexpr (dim == 3)
+      {
+        // Nested active set: the slip direction is held during a Newton pass (the friction force
+        // -T d is then a consistent, fixed-direction load, as the slip sign in 2D) and follows
+        // the slip here, at the converged state; a turn of the direction is a change like a
+        // status change (one more pass, counted against `Maximum status changes`). Updated at
+        // every iterate instead, d = slip / |slip| is a fixed-point iteration without its
+        // derivative: where the slip is small the direction flips from one iterate to the next
+        // and Newton stalls.
+        if (hold_changed && n.current.status == ContactStatus::slip
+            && friction.switches_stick_slip() && update_slip_direction(n, true))
+        {
+          ++n.changes;
+          n.fresh = true;
+          if (n.owned)
+            ++changes;
+        }
       }
     }
     build_row_transforms();
