@@ -737,6 +737,7 @@ namespace ausroll::contact
   {
     DieContact         result;
     Tensor<1, dim>     force;
+    Tensor<1, 3>       moment;
     const DiePose<dim> pose = dies[k]->pose(time);
     unsigned int       n_stick = 0, n_slip = 0;
     double             s_min = infinity, s_max = -infinity;
@@ -745,7 +746,13 @@ namespace ausroll::contact
       if (n.owned && n.current.status != ContactStatus::open
           && n.current.die == static_cast<int>(k))
       {
-        force += contact_force(n);
+        const Tensor<1, dim> f = contact_force(n);
+        force += f;
+        const Tensor<1, dim> arm = n.x - pose.reference_position();
+        if constexpr (dim == 3)
+          moment += cross_product_3d(arm, f);
+        else
+          moment[2] += arm[0] * f[1] - arm[1] * f[0];
         ++(n.current.status == ContactStatus::stick ? n_stick : n_slip);
         s_min = std::min(s_min, n.projection.s);
         s_max = std::max(s_max, n.projection.s);
@@ -755,6 +762,8 @@ namespace ausroll::contact
       }
     for (unsigned int d = 0; d < dim; ++d)
       result.force[d] = Utilities::MPI::sum(force[d], comm);
+    for (unsigned int d = 0; d < 3; ++d)
+      result.moment[d] = Utilities::MPI::sum(moment[d], comm);
     result.n_stick = Utilities::MPI::sum(n_stick, comm);
     result.n_slip = Utilities::MPI::sum(n_slip, comm);
     s_min = Utilities::MPI::min(s_min, comm);

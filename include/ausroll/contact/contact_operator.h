@@ -145,8 +145,11 @@ namespace ausroll::contact
         makes the history columns of it). */
     struct DieContact
     {
-      dealii::Tensor<1, dim> force;                   ///< force of the die on the workpiece
-      unsigned int           n_stick = 0, n_slip = 0; ///< sticking / slipping nodes
+      dealii::Tensor<1, dim> force; ///< force of the die on the workpiece
+      /** Moment of these nodal forces about the die's reference point (the die centre of a
+          rolling die), N mm; 2D: only the z component. */
+      dealii::Tensor<1, 3> moment;
+      unsigned int         n_stick = 0, n_slip = 0; ///< sticking / slipping nodes
       /** Extent of the closed nodes' die coordinate s (along the die surface); 0 if none. */
       double contact_length = 0.;
       /** Extent of the closed nodes' current positions along the die-frame x axis (for a die
