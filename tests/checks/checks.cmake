@@ -577,3 +577,16 @@ ausroll_add_script_check(NAME hard_cases SCRIPT ${AUSROLL_CHECKS_DIR}/check_hard
 # as an ellipse a = b = R equals the circle die to 1e-10 (measured 3.8e-13); an oval roll
 # (b = 0.98 a) runs to the end pressing the ring. About 2 s.
 ausroll_add_script_check(NAME ellipse_die SCRIPT ${AUSROLL_CHECKS_DIR}/check_ellipse_die.py)
+
+# ---------------------------------------------------------------- 3D disk rolling (issue 15)
+# check_disk_rolling_3d.py: (1) disk_rolling_short as a 1 mm 3D slice (u_z = 0 on both faces,
+# cylinder die, Coulomb 0.3, nested active set) equals the 2D run (1e-6; measured 3e-8) in the same 20 steps
+# without cutbacks; (2) the short round-faced (torus) and flat-faced (cylinder) die runs of
+# prm/disk_rolling_3d_{round,flat}.prm: force sign, Coulomb cone per node (1e-8), mirror symmetry
+# during the feed (1e-6), outward lateral flow of the side face, more for the flat die. About 20 s
+# CPU.
+ausroll_add_script_check(NAME disk_rolling_3d_short SCRIPT ${AUSROLL_CHECKS_DIR}/check_disk_rolling_3d.py)
+
+# Short 3D round-faced die run on 1 and 2 ranks: every history column within 1e-8 of its largest.
+ausroll_add_parallel_check(NAME disk_rolling_3d_round_short_np2
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_3d_round_short.prm HISTORY out/history.csv)
