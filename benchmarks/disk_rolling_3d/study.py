@@ -1,12 +1,13 @@
 #!/usr/bin/python3
 """3D disk rolling study (doc/scenes/disk_rolling_3d.md): runs prm/disk_rolling_3d_round.prm,
 prm/disk_rolling_3d_flat.prm and the 2D plane-strain reference with the same section mesh
-(tests/checks/scenes/disk_rolling_short.prm on the 48 x 2 Q2 ring, the same time line: feed in
-4 steps, 40 degrees in 1.25 degree steps, unloading in 4 steps, no predictor), then writes
+(tests/checks/scenes/disk_rolling_short.prm on the 48 x 2 Q2 ring, the time line of the round
+scene: feed in 4 steps, 40 degrees in 1.25 degree steps, unloading in 4 steps, no predictor; the
+flat scene rolls 10 degrees), then writes
 
   WORK/results.csv          per monitor angle: indentation depth (-u_r at mid-thickness) and
-                            lateral spread (u_z of the side-face edge), loaded (t = 36) and
-                            residual (t = 40), for both dies; 2D residual u_r
+                            lateral spread (u_z of the side-face edge), loaded (last step at
+                            full feed) and residual (after unloading), for both dies
   WORK/force.csv            force per mm of thickness against the revolution angle (3D: 2 |F| of
                             the half model / 25.4 mm; 2D: |F| per mm)
   WORK/disk_rolling_3d_spread.png, WORK/disk_rolling_3d_force.png, WORK/disk_rolling_3d_rim.png
@@ -76,59 +77,70 @@ def main():
             out["2d"], TIMELINE + ["Geometry/Ring/Cells around = 48",
                                    f"Postprocess/Monitor points = {mon2d}"], a.np)
     h = {k: history(os.path.join(v, "history.csv")) for k, v in out.items()}
+    # per run: the last loaded state (feed still 0.762 mm) and the state after unloading
+    loaded = {k: max(t for t, r in v.items() if float(r["die_roll_feed"]) >= 0.762 - 1e-9)
+              for k, v in h.items()}
+    final = {k: max(v) for k, v in h.items()}
+    rev = {k: float(h[k][loaded[k]]["die_roll_revolution"]) for k in h}
 
     with open(os.path.join(a.work, "results.csv"), "w") as f:
         f.write("angle,die,depth_loaded,spread_loaded,depth_residual,spread_residual\n")
         for die in ("round", "flat"):
+            tl, tr = loaded[die], final[die]
             for g in ANGLES:
-                f.write(f"{g},{die},{-radial(h[die][36.0], g):.6g},"
-                        f"{float(h[die][36.0][f'side{g}_uz']):.6g},{-radial(h[die][40.0], g):.6g},"
-                        f"{float(h[die][40.0][f'side{g}_uz']):.6g}\n")
-        for g in ANGLES:
-            f.write(f"{g},2d,{-radial(h['2d'][36.0], g):.6g},0,{-radial(h['2d'][40.0], g):.6g},0\n")
+                f.write(f"{g},{die},{-radial(h[die][tl], g):.6g},"
+                        f"{float(h[die][tl][f'side{g}_uz']):.6g},{-radial(h[die][tr], g):.6g},"
+                        f"{float(h[die][tr][f'side{g}_uz']):.6g}\n")
 
     force = {}
     for k in h:
         scale = 2.0 / (2 * HALF) if k != "2d" else 1.0
-        force[k] = [(float(r["die_roll_revolution"]), scale * float(r["die_roll_force_magnitude"]))
-                    for t, r in sorted(h[k].items()) if 0 < t <= 36.0 + 1e-9]
+        force[k] = {round(float(r["die_roll_revolution"]), 6):
+                    scale * float(r["die_roll_force_magnitude"])
+                    for t, r in sorted(h[k].items()) if 0 < t <= loaded[k] + 1e-9}
     with open(os.path.join(a.work, "force.csv"), "w") as f:
-        f.write("time,revolution,round_N_per_mm,flat_N_per_mm,plane_strain_N_per_mm\n")
-        for i in range(len(force["2d"])):
-            f.write(f"{i + 1},{force['2d'][i][0]:.4g},{force['round'][i][1]:.6g},"
-                    f"{force['flat'][i][1]:.6g},{force['2d'][i][1]:.6g}\n")
+        f.write("revolution,round_N_per_mm,flat_N_per_mm,plane_strain_N_per_mm\n")
+        for ang in sorted(force["2d"]):
+            f.write(f"{ang:.4g}," + ",".join(f"{force[k][ang]:.6g}" if ang in force[k] else ""
+                                              for k in ("round", "flat", "2d")) + "\n")
 
     def mean(k, lo, hi):
-        v = [fv for ang, fv in force[k] if lo <= ang <= hi]
+        v = [fv for ang, fv in force[k].items() if lo <= ang <= hi]
         return sum(v) / len(v)
 
-    print(f"end of feed (t = 4): |F| per mm round {force['round'][3][1]:.0f}, "
-          f"flat {force['flat'][3][1]:.0f}, plane strain {force['2d'][3][1]:.0f} N/mm")
-    print(f"mean |F| per mm over 10-40 deg: round {mean('round', 10, 40):.0f}, "
-          f"flat {mean('flat', 10, 40):.0f}, plane strain {mean('2d', 10, 40):.0f} N/mm")
-    rolled = [g for g in ANGLES if 95 <= g <= 125]  # rolled over, away from the start and stop
+    print(f"end of feed: |F| per mm round {force['round'][0.0]:.0f}, "
+          f"flat {force['flat'][0.0]:.0f}, plane strain {force['2d'][0.0]:.0f} N/mm")
     for die in ("round", "flat"):
-        for t, label in ((36.0, "loaded"), (40.0, "residual")):
+        lo, hi = min(5.0, rev[die]), rev[die]
+        print(f"mean |F| per mm over {lo:g}-{hi:g} deg: {die} {mean(die, lo, hi):.0f}, "
+              f"plane strain {mean('2d', lo, hi):.0f} N/mm")
+    for die in ("round", "flat"):
+        rolled = [g for g in ANGLES if 90 <= g <= 90 + rev[die] - 5 + 1e-9] or [90]
+        for t, label in ((loaded[die], "loaded"), (final[die], "residual")):
             d = [-radial(h[die][t], g) for g in rolled]
-            s = [float(h[die][t][f"side{g}_uz"]) for g in rolled]
-            print(f"{die} {label} (95-125 deg): depth {min(d):.3f}..{max(d):.3f} mm, "
-                  f"spread {min(s):.3f}..{max(s):.3f} mm, spread/depth "
-                  f"{sum(s) / sum(d):.2f}")
+            sp = [float(h[die][t][f"side{g}_uz"]) for g in rolled]
+            print(f"{die} {label} ({rolled[0]}-{rolled[-1]} deg): depth {min(d):.3f}..{max(d):.3f}"
+                  f" mm, spread {min(sp):.3f}..{max(sp):.3f} mm, spread/depth "
+                  f"{sum(sp) / sum(d):.2f}")
     for die in ("round", "flat"):
-        diff = max(abs(radial(h[die][40.0], g) - radial(h["2d"][40.0], g)) for g in ANGLES)
-        print(f"residual rim at mid-thickness, {die} vs plane strain: max |difference| "
-              f"{diff:.3f} mm (2D trough {min(radial(h['2d'][40.0], g) for g in ANGLES):.3f} mm)")
+        # the 2D run at the same revolution, unloaded: the 2D history at the time of that angle
+        # is loaded; compare residuals of the same time line only when the angles agree
+        t2 = max(t for t, r in h["2d"].items() if float(r["die_roll_revolution"]) <= rev[die] + 1e-9
+                 and float(r["die_roll_feed"]) >= 0.762 - 1e-9)
+        diff = max(abs(radial(h[die][loaded[die]], g) - radial(h["2d"][t2], g)) for g in ANGLES)
+        print(f"loaded rim at mid-thickness after {rev[die]:g} deg, {die} vs plane strain: "
+              f"max |difference| {diff:.3f} mm")
 
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for die, m in (("round", "o"), ("flat", "s")):
-        for t, fill in ((36.0, "full"), (40.0, "none")):
+        for t, fill in ((loaded[die], "full"), (final[die], "none")):
             ax.plot([-radial(h[die][t], g) for g in ANGLES],
                     [float(h[die][t][f"side{g}_uz"]) for g in ANGLES], m, fillstyle=fill,
-                    label=f"{die} die, {'under load' if t == 36 else 'after unloading'}")
-    lim = max(0.9, max(-radial(h["flat"][36.0], g) for g in ANGLES))
+                    label=f"{die} die, {'under load' if t == loaded[die] else 'after unloading'}")
+    lim = max(0.9, max(-radial(h["flat"][loaded["flat"]], g) for g in ANGLES))
     ax.plot([0, lim], [0, lim], "k--", lw=0.8, label="spread = depth")
     ax.set_xlabel("indentation depth -u_r at mid-thickness (mm)")
     ax.set_ylabel("lateral spread u_z of the side-face edge (mm)")
@@ -139,7 +151,7 @@ def main():
 
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
     for k, lab in (("round", "3D round die"), ("flat", "3D flat die"), ("2d", "2D plane strain")):
-        ax.plot([x for x, _ in force[k]], [y for _, y in force[k]], label=lab)
+        ax.plot(sorted(force[k]), [force[k][x] for x in sorted(force[k])], label=lab)
     ax.set_xlabel("revolution (deg; 0 = end of the feed)")
     ax.set_ylabel("|F| per mm of thickness (N/mm)")
     ax.legend()
@@ -149,8 +161,9 @@ def main():
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
     for k, lab in (("round", "3D round die, mid-thickness"), ("flat", "3D flat die, mid-thickness"),
                    ("2d", "2D plane strain")):
-        ax.plot(ANGLES, [radial(h[k][40.0], g) for g in ANGLES], "o-", ms=3, label=lab)
-    ax.set_xlabel("polar angle (deg; die fed at 90, stopped at 130)")
+        ax.plot(ANGLES, [radial(h[k][final[k]], g) for g in ANGLES], "o-", ms=3,
+                label=f"{lab}, {rev[k]:g} deg")
+    ax.set_xlabel("polar angle (deg; die fed at 90, rolled towards larger angles)")
     ax.set_ylabel("residual radial displacement of the rim (mm)")
     ax.legend(fontsize=8)
     fig.tight_layout()
