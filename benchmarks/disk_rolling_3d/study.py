@@ -136,7 +136,8 @@ def main():
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for die, m in (("round", "o"), ("flat", "s")):
-        for t, fill in ((loaded[die], "full"), (final[die], "none")):
+        states = [(loaded[die], "full")] + ([(final[die], "none")] if final[die] != loaded[die] else [])
+        for t, fill in states:
             ax.plot([-radial(h[die][t], g) for g in ANGLES],
                     [float(h[die][t][f"side{g}_uz"]) for g in ANGLES], m, fillstyle=fill,
                     label=f"{die} die, {'under load' if t == loaded[die] else 'after unloading'}")
@@ -162,9 +163,9 @@ def main():
     for k, lab in (("round", "3D round die, mid-thickness"), ("flat", "3D flat die, mid-thickness"),
                    ("2d", "2D plane strain")):
         ax.plot(ANGLES, [radial(h[k][final[k]], g) for g in ANGLES], "o-", ms=3,
-                label=f"{lab}, {rev[k]:g} deg")
+                label=f"{lab}, {rev[k]:g} deg" + (", under load" if final[k] == loaded[k] else ""))
     ax.set_xlabel("polar angle (deg; die fed at 90, rolled towards larger angles)")
-    ax.set_ylabel("residual radial displacement of the rim (mm)")
+    ax.set_ylabel("radial displacement of the rim after unloading (mm)")
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(a.work, "disk_rolling_3d_rim.png"), dpi=110)
