@@ -206,7 +206,7 @@ namespace ausroll::contact
       }
       if constexpr (dim == 3)
         if (n.current.status == ContactStatus::slip)
-          update_slip_direction(n);
+          update_slip_direction(n, !hold_changed);
       if (n.current.status != ContactStatus::open)
         ++closed;
     }
@@ -284,7 +284,7 @@ namespace ausroll::contact
   }
 
   template <int dim>
-  void ContactOperator<dim>::update_slip_direction(Node &n) const
+  bool ContactOperator<dim>::update_slip_direction(Node &n, const bool follow_slip) const
   {
     // The friction force opposes the slip of the node over the step so far (backward Euler in
     // the direction: d = slip / |slip|) once that slip is well defined, i.e. larger than
@@ -295,11 +295,19 @@ namespace ausroll::contact
       n.current.direction = n.next_direction;
       n.direction_pending = false;
     }
+    if (!follow_slip)
+      return false;
     const std::array<double, dim - 1> slip = slip_increment(n);
     const double                      size = magnitude(slip);
-    if (size > slip_length)
-      for (unsigned int a = 0; a < dim - 1; ++a)
-        n.current.direction[a] = slip[a] / size;
+    if (size <= slip_length)
+      return false;
+    double change = 0.;
+    for (unsigned int a = 0; a < dim - 1; ++a)
+    {
+      change = std::max(change, std::abs(slip[a] / size - n.current.direction[a]));
+      n.current.direction[a] = slip[a] / size;
+    }
+    return change > direction_tolerance;
   }
 
   template <int dim>
@@ -522,6 +530,24 @@ namespace ausroll::contact
         if (n.owned)
           ++changes;
       }
+      else if constexpr (dim == 3)
+      {
+        // Nested active set: the slip direction is held during a Newton pass (the friction force
+        // -T d is then a consistent, fixed-direction load, as the slip sign in 2D) and follows
+        // the slip here, at the converged state; a turn of the direction is a change like a
+        // status change (one more pass, counted against `Maximum status changes`). Updated at
+        // every iterate instead, d = slip / |slip| is a fixed-point iteration without its
+        // derivative: where the slip is small the direction flips from one iterate to the next
+        // and Newton stalls.
+        if (hold_changed && n.current.status == ContactStatus::slip
+            && friction.switches_stick_slip() && update_slip_direction(n, true))
+        {
+          ++n.changes;
+          n.fresh = true;
+          if (n.owned)
+            ++changes;
+        }
+      }
     }
     build_row_transforms();
     return Utilities::MPI::sum(changes, comm);
@@ -711,6 +737,7 @@ namespace ausroll::contact
   {
     DieContact         result;
     Tensor<1, dim>     force;
+    Tensor<1, 3>       moment;
     const DiePose<dim> pose = dies[k]->pose(time);
     unsigned int       n_stick = 0, n_slip = 0;
     double             s_min = infinity, s_max = -infinity;
@@ -719,7 +746,13 @@ namespace ausroll::contact
       if (n.owned && n.current.status != ContactStatus::open
           && n.current.die == static_cast<int>(k))
       {
-        force += contact_force(n);
+        const Tensor<1, dim> f = contact_force(n);
+        force += f;
+        const Tensor<1, dim> arm = n.x - pose.reference_position();
+        if constexpr (dim == 3)
+          moment += cross_product_3d(arm, f);
+        else
+          moment[2] += arm[0] * f[1] - arm[1] * f[0];
         ++(n.current.status == ContactStatus::stick ? n_stick : n_slip);
         s_min = std::min(s_min, n.projection.s);
         s_max = std::max(s_max, n.projection.s);
@@ -729,6 +762,8 @@ namespace ausroll::contact
       }
     for (unsigned int d = 0; d < dim; ++d)
       result.force[d] = Utilities::MPI::sum(force[d], comm);
+    for (unsigned int d = 0; d < 3; ++d)
+      result.moment[d] = Utilities::MPI::sum(moment[d], comm);
     result.n_stick = Utilities::MPI::sum(n_stick, comm);
     result.n_slip = Utilities::MPI::sum(n_slip, comm);
     s_min = Utilities::MPI::min(s_min, comm);

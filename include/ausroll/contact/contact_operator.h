@@ -145,8 +145,11 @@ namespace ausroll::contact
         makes the history columns of it). */
     struct DieContact
     {
-      dealii::Tensor<1, dim> force;                   ///< force of the die on the workpiece
-      unsigned int           n_stick = 0, n_slip = 0; ///< sticking / slipping nodes
+      dealii::Tensor<1, dim> force; ///< force of the die on the workpiece
+      /** Moment of these nodal forces about the die's reference point (the die centre of a
+          rolling die), N mm; 2D: only the z component. */
+      dealii::Tensor<1, 3> moment;
+      unsigned int         n_stick = 0, n_slip = 0; ///< sticking / slipping nodes
       /** Extent of the closed nodes' die coordinate s (along the die surface); 0 if none. */
       double contact_length = 0.;
       /** Extent of the closed nodes' current positions along the die-frame x axis (for a die
@@ -317,9 +320,10 @@ namespace ausroll::contact
         its current slip started (die-relative, rotated to the global frame). */
     std::array<double, dim - 1> slip_increment(const Node &n) const;
 
-    /** 3D: d = the direction of the slip of node @p n since its current slip started, if that
-        slip is longer than slip_length. */
-    void update_slip_direction(Node &n) const;
+    /** 3D: take a pending direction of the last step; with @p follow_slip, d = the direction of
+        the slip of node @p n since its current slip started, if that slip is longer than
+        slip_length. Returns true if d turned by more than direction_tolerance. */
+    bool update_slip_direction(Node &n, const bool follow_slip) const;
 
     /** The slip direction vector d = sum_a d_a t_a of node @p n (global). */
     dealii::Tensor<1, dim> slip_vector(const Node &n) const;
@@ -345,6 +349,9 @@ namespace ausroll::contact
     /** 3D: slips over a step longer than this (1e-2 of the length scale) set the slip direction
         at every iterate; shorter ones keep it (update_slip_direction()). */
     double slip_length = 1e-8;
+    /** 3D, nested active set: a turn of the slip direction (largest change of a component of
+        the unit vector) beyond this at a converged state is one more pass. */
+    double direction_tolerance = 1e-8;
     /** Slip against the slip direction beyond this is a reversal (the node sticks). */
     double reversal_tolerance = 1e-10;
     double force_tolerance = 0.;

@@ -27,12 +27,40 @@ namespace ausroll::io::postprocess
       row.emplace_back(p + "slip_nodes", c.n_slip);
       row.emplace_back(p + "contact_length", c.contact_length);
       row.emplace_back(p + "contact_width", c.contact_width);
-      // The rolling columns are planar (line of centres in the x-y plane); in 3D they are not
-      // written.
-      if constexpr (dim == 2)
-        if (const contact::RollingMotion<dim> *rolling = die.rolling_motion())
+      if (const contact::RollingMotion<dim> *rolling = die.rolling_motion())
+      {
+        if constexpr (dim == 2)
           rolling_columns(*rolling, input.time, Tensor<1, 2>({c.force[0], c.force[1]}), p, row);
+        else
+          rolling_columns(*rolling, input.time, c.force, c.moment, p, row);
+      }
     }
+  }
+
+  void rolling_columns(const contact::RollingMotion<3> &rolling,
+                       const double                     time,
+                       const Tensor<1, 3>              &force,
+                       const Tensor<1, 3>              &moment,
+                       const std::string               &prefix,
+                       HistoryRow                      &row)
+  {
+    // the planar columns in the plane orthogonal to the axis a, then the axial force and the
+    // torque about the die axis
+    const auto        &d = rolling.data();
+    const Tensor<1, 3> a = d.axis / d.axis.norm();
+    Tensor<1, 3>       e_r = rolling.die_center(time) - d.workpiece_center;
+    e_r -= (e_r * a) * a;
+    e_r /= e_r.norm();
+    const Tensor<1, 3> e_t = cross_product_3d(a, e_r);
+    const double       a0 = d.initial_center_distance.value_or(d.workpiece_radius + d.die_radius);
+    row.emplace_back(prefix + "revolution",
+                     d.direction * (rolling.line_angle(time) - d.initial_line_angle) * 180. / M_PI);
+    row.emplace_back(prefix + "feed", a0 - rolling.center_distance(time));
+    row.emplace_back(prefix + "force_radial", force * e_r);
+    row.emplace_back(prefix + "force_tangential", force * e_t);
+    row.emplace_back(prefix + "force_axial", force * a);
+    row.emplace_back(prefix + "force_magnitude", force.norm());
+    row.emplace_back(prefix + "torque", moment * a);
   }
 
   void rolling_columns(const contact::RollingMotion<2> &rolling,

@@ -20,8 +20,8 @@ namespace ausroll::io::postprocess
    * `slip_nodes`, `contact_length` (extent of the closed nodes' die coordinate s, along the die
    * surface) and `contact_width` (extent of the closed nodes' current positions along the
    * die-frame x axis: for a die pressed along y the contact width, the half-width a in a half
-   * model with the symmetry axis at x = 0). In 2D a rolling die adds, right after its block, the
-   * columns of rolling_columns() (not written in 3D).
+   * model with the symmetry axis at x = 0). A rolling die adds, right after its block, the
+   * columns of rolling_columns() (3D: with `force_axial` and `torque`).
    */
   template <int dim>
   class DieForces : public Postprocessor<dim>
@@ -42,6 +42,21 @@ namespace ausroll::io::postprocess
   void rolling_columns(const contact::RollingMotion<2> &rolling,
                        const double                     time,
                        const dealii::Tensor<1, 2>      &force,
+                       const std::string               &prefix,
+                       HistoryRow                      &row);
+
+  /**
+   * 3D columns of a die with `Motion/Type = rolling` (workpiece axis a = `Motion/Axis`):
+   * `revolution`, `feed` as in 2D; the force @p force of the die on the workpiece along
+   * `force_radial` (e_r: from the workpiece axis to the die centre, orthogonal to a),
+   * `force_tangential` (e_t = a x e_r), `force_axial` (a), `force_magnitude` |F|; and `torque`
+   * = a . @p moment, the moment of the die's nodal forces on the workpiece about the die axis
+   * through the die centre (N mm; the die receives the opposite torque).
+   */
+  void rolling_columns(const contact::RollingMotion<3> &rolling,
+                       const double                     time,
+                       const dealii::Tensor<1, 3>      &force,
+                       const dealii::Tensor<1, 3>      &moment,
                        const std::string               &prefix,
                        HistoryRow                      &row);
 } // namespace ausroll::io::postprocess
