@@ -68,12 +68,9 @@ namespace ausroll::scene
       return newton.solve(*equilibrium, newton_log);
     }
     void                  restart_step() override { contact_strategy->restart_step(); }
-    contact::StepDecision end_of_step(const double dt) override
-    {
-      return contact_strategy->end_of_step(dt, parameters.loading.end_time, newton_log);
-    }
-    std::string  keep_last_converged(const double t_start) override;
-    unsigned int accept_step(const solver::LoadStep &step) override;
+    contact::StepDecision end_of_step(const double dt) override;
+    std::string           keep_last_converged(const double t_start) override;
+    unsigned int          accept_step(const solver::LoadStep &step) override;
     //@}
 
   private:
@@ -90,6 +87,10 @@ namespace ausroll::scene
     /** After a converged step: warn (or stop, `Loading/Stop at distorted mesh`) the first time
         the volume change at a quadrature point crosses `Loading/Volume change limit`. */
     void check_distortion();
+    /** After a converged solve (2D, `Contact/Penetrating boundaries = add`): if a boundary that
+        is not a candidate of a die lies inside it, make it a candidate, say so and return true
+        (the step is then solved again from its start). */
+    bool add_penetrating_boundaries();
     /** Output of the current (converged) state: every postprocessor's files and the VTU. */
     void write_output();
     /**
