@@ -65,7 +65,7 @@ namespace ausroll::contact
         "such a boundary lies inside the die (by more than 1 % of the smallest cell), the "
         "boundary becomes a candidate of the die, the run says so, and the step is solved again "
         "from its start; warn: only warn, results from then on are not those of the forming "
-        "process.");
+        "process. 2D only (3D runs do not check).");
     for (unsigned int k = 0; k < max_dies; ++k)
     {
       prm.enter_subsection("Die " + std::to_string(k));
