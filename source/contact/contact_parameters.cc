@@ -62,10 +62,11 @@ namespace ausroll::contact
         "A workpiece boundary that is not among a die's Candidate boundaries cannot touch that "
         "die and would pass through it (the free side of an upsetting folding onto the platen "
         "when only the top face is a candidate). add: after a converged step in which a node of "
-        "such a boundary lies inside the die (by more than 1 % of the smallest cell), the "
+        "such a boundary crossed into the die (by more than 1 % of the smallest cell), the "
         "boundary becomes a candidate of the die, the run says so, and the step is solved again "
         "from its start; warn: only warn, results from then on are not those of the forming "
-        "process. 2D only (3D runs do not check).");
+        "process. Boundaries with prescribed displacements are only warned about. 2D only "
+        "(3D runs do not check).");
     for (unsigned int k = 0; k < max_dies; ++k)
     {
       prm.enter_subsection("Die " + std::to_string(k));

@@ -68,6 +68,19 @@ namespace ausroll::contact
                                      const double                         tolerance,
                                      const MPI_Comm                       comm) const
   {
+    return find_crossing(contact, u, time, u, -1., tolerance, comm);
+  }
+
+  template <int dim>
+  typename NonCandidatePenetration<dim>::Penetration
+  NonCandidatePenetration<dim>::find_crossing(const ContactOperator<dim>          &contact,
+                                              const TrilinosWrappers::MPI::Vector &u,
+                                              const double                         time,
+                                              const TrilinosWrappers::MPI::Vector &u_start,
+                                              const double                         t_start,
+                                              const double                         tolerance,
+                                              const MPI_Comm                       comm) const
+  {
     static_assert(dim == 2, "the contact code is 2D");
     double       depth = tolerance;
     int          die = -1;
@@ -85,7 +98,18 @@ namespace ausroll::contact
         for (unsigned int c = 0; c < 2; ++c)
           x[c] = n.X[c] + u[n.dofs[c]];
         const DieProjection<dim> p = d.project(x, time);
-        if (p.valid && -p.gap > depth)
+        if (!p.valid || -p.gap <= depth)
+          continue;
+        if (t_start >= 0.)
+        {
+          // only nodes outside the die at the start of the step
+          Point<2> x0;
+          for (unsigned int c = 0; c < 2; ++c)
+            x0[c] = n.X[c] + u_start[n.dofs[c]];
+          const DieProjection<dim> p0 = d.project(x0, t_start);
+          if (!p0.valid || p0.gap < -tolerance)
+            continue;
+        }
         {
           depth = -p.gap;
           die = k;

@@ -263,10 +263,22 @@ namespace ausroll::scene
     {
       if (!contact.active() || !parameters.contact.add_penetrating_boundaries)
         return false;
-      const auto p = non_candidate_penetration.find(
-          contact, system.solution_ghosted, time, 1e-2 * system.min_cell_diameter, comm);
+      const auto p = non_candidate_penetration.find_crossing(contact,
+                                                             system.solution_ghosted,
+                                                             time,
+                                                             system.step_start,
+                                                             step_start_time,
+                                                             1e-2 * system.min_cell_diameter,
+                                                             comm);
       if (!p.found)
         return false;
+      // A boundary with prescribed displacements (a symmetry axis, a clamp) is not made a
+      // contact candidate: its constraints would conflict; the warning of accept_step() names it.
+      for (const auto &c : parameters.boundary_conditions.conditions)
+        if (c.id == p.boundary
+            && (c.type == mechanics::BoundaryConditionType::fixed
+                || c.type == mechanics::BoundaryConditionType::displacement))
+          return false;
       log << "  note: "
           << contact::NonCandidatePenetration<dim>::describe(
                  p, contact.die(p.die).name, step_number + 1, time)

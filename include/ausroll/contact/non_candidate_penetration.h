@@ -58,6 +58,20 @@ namespace ausroll::contact
                      const MPI_Comm                               comm) const;
 
     /**
+     * As find(), but only nodes that were outside the die (gap above -@p tolerance) at the
+     * start of the step (displacement @p u_start at @p t_start): nodes that cross the die
+     * surface in this step. A node that is already "inside" a die far from where it touches the
+     * workpiece (an unbounded flat die, the back of a shoulder) is not one.
+     */
+    Penetration find_crossing(const ContactOperator<dim>                  &contact,
+                              const dealii::TrilinosWrappers::MPI::Vector &u,
+                              const double                                 time,
+                              const dealii::TrilinosWrappers::MPI::Vector &u_start,
+                              const double                                 t_start,
+                              const double                                 tolerance,
+                              const MPI_Comm                               comm) const;
+
+    /**
      * The first time find() finds a node: the warning that the boundary passes through the die
      * (results no longer those of the forming process, the entry to change); else an empty
      * string. Collective.

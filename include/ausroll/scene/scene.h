@@ -59,6 +59,7 @@ namespace ausroll::scene
     void begin_step(const double t_start) override
     {
       time = t_start;
+      step_start_time = t_start;
       contact_strategy->begin_step(system.solution_ghosted, t_start);
     }
     solver::NewtonResult solve(const double t, const double predictor_ratio) override
@@ -133,6 +134,8 @@ namespace ausroll::scene
     contact::CurvedDieTangent<dim> curved_die_tangent;
     /** Warns once when a boundary that is not a contact candidate passes through a die. */
     contact::NonCandidatePenetration<dim> non_candidate_penetration;
+    /** Pseudo-time at the start of the current load step. */
+    double step_start_time = 0.;
     /** `Contact/Strategy`: when contact statuses change (acts on contact). */
     std::unique_ptr<contact::StatusStrategy> contact_strategy;
     /** Declared after the system (its matrix): destroyed first (its kept direct factorisation
