@@ -55,6 +55,18 @@ namespace ausroll::contact
         "quadratically also when the contact forces are large (elastic punch: 58 instead of 90 "
         "iterations, doc/scenes/hard_cases.md); false keeps the tangent of earlier versions, to "
         "which the shipped scenes' regression outputs are pinned.");
+    prm.declare_entry(
+        "Penetrating boundaries",
+        "add",
+        Patterns::Selection("add|warn"),
+        "A workpiece boundary that is not among a die's Candidate boundaries cannot touch that "
+        "die and would pass through it (the free side of an upsetting folding onto the platen "
+        "when only the top face is a candidate). add: after a converged step in which a node of "
+        "such a boundary crossed into the die (by more than 1 % of the smallest cell), the "
+        "boundary becomes a candidate of the die, the run says so, and the step is solved again "
+        "from its start; warn: only warn, results from then on are not those of the forming "
+        "process. Boundaries with prescribed displacements are only warned about. 2D only "
+        "(3D runs do not check).");
     for (unsigned int k = 0; k < max_dies; ++k)
     {
       prm.enter_subsection("Die " + std::to_string(k));
@@ -194,6 +206,7 @@ namespace ausroll::contact
     max_status_changes = prm.get_integer("Maximum status changes");
     ratio_tolerance = prm.get_double("Ratio tolerance");
     curvature_tangent = prm.get_bool("Curvature tangent");
+    add_penetrating_boundaries = prm.get("Penetrating boundaries") == "add";
     dies.clear();
     for (unsigned int k = 0; k < n_dies; ++k)
     {

@@ -61,16 +61,27 @@ namespace ausroll::contact
   }
 
   template <int dim>
-  std::string NonCandidatePenetration<dim>::check(const ContactOperator<dim>          &contact,
-                                                  const TrilinosWrappers::MPI::Vector &u,
-                                                  const double                         time,
-                                                  const unsigned int                   step,
-                                                  const double                         tolerance,
-                                                  const MPI_Comm                       comm)
+  typename NonCandidatePenetration<dim>::Penetration
+  NonCandidatePenetration<dim>::find(const ContactOperator<dim>          &contact,
+                                     const TrilinosWrappers::MPI::Vector &u,
+                                     const double                         time,
+                                     const double                         tolerance,
+                                     const MPI_Comm                       comm) const
+  {
+    return find_crossing(contact, u, time, u, -1., tolerance, comm);
+  }
+
+  template <int dim>
+  typename NonCandidatePenetration<dim>::Penetration
+  NonCandidatePenetration<dim>::find_crossing(const ContactOperator<dim>          &contact,
+                                              const TrilinosWrappers::MPI::Vector &u,
+                                              const double                         time,
+                                              const TrilinosWrappers::MPI::Vector &u_start,
+                                              const double                         t_start,
+                                              const double                         tolerance,
+                                              const MPI_Comm                       comm) const
   {
     static_assert(dim == 2, "the contact code is 2D");
-    if (reported)
-      return "";
     double       depth = tolerance;
     int          die = -1;
     BoundaryNode deepest;
@@ -87,7 +98,18 @@ namespace ausroll::contact
         for (unsigned int c = 0; c < 2; ++c)
           x[c] = n.X[c] + u[n.dofs[c]];
         const DieProjection<dim> p = d.project(x, time);
-        if (p.valid && -p.gap > depth)
+        if (!p.valid || -p.gap <= depth)
+          continue;
+        if (t_start >= 0.)
+        {
+          // only nodes outside the die at the start of the step
+          Point<2> x0;
+          for (unsigned int c = 0; c < 2; ++c)
+            x0[c] = n.X[c] + u_start[n.dofs[c]];
+          const DieProjection<dim> p0 = d.project(x0, t_start);
+          if (!p0.valid || p0.gap < -tolerance)
+            continue;
+        }
         {
           depth = -p.gap;
           die = k;
@@ -95,27 +117,58 @@ namespace ausroll::contact
         }
       }
     // the deepest node over all ranks, told by its rank
-    const auto extremes = Utilities::MPI::min_max_avg(die >= 0 ? depth : 0., comm);
+    Penetration result;
+    const auto  extremes = Utilities::MPI::min_max_avg(die >= 0 ? depth : 0., comm);
     if (extremes.max <= tolerance)
-      return "";
+      return result;
     const unsigned int    root = extremes.max_index;
     std::array<double, 4> data{{double(die),
                                 double(deepest.boundary_ids.empty() ? 0 : deepest.boundary_ids[0]),
                                 deepest.X[0],
                                 deepest.X[1]}};
     data = Utilities::MPI::broadcast(comm, data, root);
+    result.found = true;
+    result.die = static_cast<unsigned int>(data[0]);
+    result.boundary = static_cast<unsigned int>(data[1]);
+    result.depth = extremes.max;
+    result.X = Point<dim>(data[2], data[3]);
+    return result;
+  }
+
+  template <int dim>
+  std::string NonCandidatePenetration<dim>::describe(const Penetration &p,
+                                                     const std::string &die_name,
+                                                     const unsigned int step,
+                                                     const double       time)
+  {
+    std::ostringstream msg;
+    msg << "boundary " << p.boundary << " of the workpiece passes through die " << p.die << " '"
+        << die_name << "' by " << p.depth << " mm at the node (" << p.X[0] << " " << p.X[1]
+        << ") (reference coordinates) in step " << step << ", t = " << time
+        << ": it is not among Contact/Die " << p.die << "/Candidate boundaries";
+    return msg.str();
+  }
+
+  template <int dim>
+  std::string NonCandidatePenetration<dim>::check(const ContactOperator<dim>          &contact,
+                                                  const TrilinosWrappers::MPI::Vector &u,
+                                                  const double                         time,
+                                                  const unsigned int                   step,
+                                                  const double                         tolerance,
+                                                  const MPI_Comm                       comm)
+  {
+    if (reported)
+      return "";
+    const Penetration p = find(contact, u, time, tolerance, comm);
+    if (!p.found)
+      return "";
     reported = true;
-    const RigidDie<dim> &d = contact.die(static_cast<unsigned int>(data[0]));
-    std::ostringstream   msg;
-    msg << "boundary " << data[1] << " of the workpiece passes through die "
-        << static_cast<unsigned int>(data[0]) << " '" << d.name << "' by " << extremes.max
-        << " mm at the node (" << data[2] << " " << data[3] << ") (reference coordinates) in step "
-        << step << ", t = " << time << ": it is not among Contact/Die "
-        << static_cast<unsigned int>(data[0])
-        << "/Candidate boundaries, so it cannot touch the die; results from here on are not "
-           "those of the forming process. Add "
-        << data[1] << " to Contact/Die " << static_cast<unsigned int>(data[0])
-        << "/Candidate boundaries";
+    std::ostringstream msg;
+    msg << describe(p, contact.die(p.die).name, step, time)
+        << ", so it cannot touch the die; results from here on are not those of the forming "
+           "process. Add "
+        << p.boundary << " to Contact/Die " << p.die
+        << "/Candidate boundaries (or set Contact/Penetrating boundaries = add)";
     return msg.str();
   }
 

@@ -257,6 +257,55 @@ namespace ausroll::scene
   }
 
   template <int dim>
+  bool Scene<dim>::add_penetrating_boundaries()
+  {
+    if constexpr (dim == 2)
+    {
+      if (!contact.active() || !parameters.contact.add_penetrating_boundaries)
+        return false;
+      const auto p = non_candidate_penetration.find_crossing(contact,
+                                                             system.solution_ghosted,
+                                                             time,
+                                                             system.step_start,
+                                                             step_start_time,
+                                                             1e-2 * system.min_cell_diameter,
+                                                             comm);
+      if (!p.found)
+        return false;
+      // A boundary with prescribed displacements (a symmetry axis, a clamp) is not made a
+      // contact candidate: its constraints would conflict; the warning of accept_step() names it.
+      for (const auto &c : parameters.boundary_conditions.conditions)
+        if (c.id == p.boundary
+            && (c.type == mechanics::BoundaryConditionType::fixed
+                || c.type == mechanics::BoundaryConditionType::displacement))
+          return false;
+      log << "  note: "
+          << contact::NonCandidatePenetration<dim>::describe(
+                 p, contact.die(p.die).name, step_number + 1, time)
+          << "; it is now a candidate of that die (Contact/Penetrating boundaries = add), and the "
+             "step is solved again. Add "
+          << p.boundary << " to Contact/Die " << p.die
+          << "/Candidate boundaries to say so in the input" << std::endl;
+      // The committed statuses carry over to the new set of contact nodes by position.
+      const std::vector<double> state = contact.pack_state();
+      contact.add_candidate_boundary(p.die, p.boundary);
+      setup_dof_dependents();
+      contact.unpack_state(state);
+      contact_strategy->restart_step();
+      return true;
+    }
+    return false;
+  }
+
+  template <int dim>
+  contact::StepDecision Scene<dim>::end_of_step(const double dt)
+  {
+    if (add_penetrating_boundaries())
+      return contact::StepDecision{false, 1.};
+    return contact_strategy->end_of_step(dt, parameters.loading.end_time, newton_log);
+  }
+
+  template <int dim>
   unsigned int Scene<dim>::accept_step(const solver::LoadStep &step)
   {
     const unsigned int status_changes = contact.active() ? contact.n_changed_statuses() : 0;

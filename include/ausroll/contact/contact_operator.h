@@ -141,6 +141,13 @@ namespace ausroll::contact
     /** Die @p k (name, pose, motion, friction law). */
     const RigidDie<dim> &die(const unsigned int k) const { return *dies[k]; }
 
+    /** Let workpiece boundary @p id touch die @p k too (`Contact/Penetrating boundaries = add`);
+        the nodes are set up again by the next setup(). */
+    void add_candidate_boundary(const unsigned int k, const unsigned int id)
+    {
+      dies[k]->add_candidate(id);
+    }
+
     /** The contact of one die at the current state, over all ranks (io::postprocess::DieForces
         makes the history columns of it). */
     struct DieContact

@@ -107,6 +107,10 @@ namespace ausroll::contact
     /** `Curvature tangent`: the turning of the die normal in the tangent of slipping nodes
         (contact/curved_die_tangent.h). */
     bool curvature_tangent = false;
+    /** `Penetrating boundaries = add`: a workpiece boundary that is not a candidate of a die
+        but passes through it becomes one, and the step is solved again; false (`warn`): only
+        warn. */
+    bool add_penetrating_boundaries = true;
 
     /** Declare subsection `Contact`. */
     static void declare_parameters(dealii::ParameterHandler &prm);

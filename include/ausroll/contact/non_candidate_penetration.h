@@ -32,14 +32,49 @@ namespace ausroll::contact
   class NonCandidatePenetration
   {
   public:
+    /** The deepest node of a boundary that is not a candidate of a die and lies inside it. */
+    struct Penetration
+    {
+      bool               found = false; ///< a node lies deeper than the tolerance
+      unsigned int       die = 0;       ///< the die it passes through
+      unsigned int       boundary = 0;  ///< its boundary id (the first, at a corner)
+      double             depth = 0.;    ///< how deep (mm)
+      dealii::Point<dim> X;             ///< its reference position
+    };
+
     /** Boundary nodes of @p dof_handler (support points and DoFs), by boundary id (call after
         every change of the DoFs). */
     void setup(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &dof_handler);
 
     /**
-     * The first time a node of a boundary that is not a candidate of die k lies more than
-     * @p tolerance inside die k at displacement @p u (ghosted) and time @p time: the message;
-     * else an empty string. Collective.
+     * The deepest node, over all ranks, of a boundary that is not a candidate of die k and lies
+     * more than @p tolerance inside die k at displacement @p u (ghosted) and time @p time (found =
+     * false if there is none). Collective.
+     */
+    Penetration find(const ContactOperator<dim>                  &contact,
+                     const dealii::TrilinosWrappers::MPI::Vector &u,
+                     const double                                 time,
+                     const double                                 tolerance,
+                     const MPI_Comm                               comm) const;
+
+    /**
+     * As find(), but only nodes that were outside the die (gap above -@p tolerance) at the
+     * start of the step (displacement @p u_start at @p t_start): nodes that cross the die
+     * surface in this step. A node that is already "inside" a die far from where it touches the
+     * workpiece (an unbounded flat die, the back of a shoulder) is not one.
+     */
+    Penetration find_crossing(const ContactOperator<dim>                  &contact,
+                              const dealii::TrilinosWrappers::MPI::Vector &u,
+                              const double                                 time,
+                              const dealii::TrilinosWrappers::MPI::Vector &u_start,
+                              const double                                 t_start,
+                              const double                                 tolerance,
+                              const MPI_Comm                               comm) const;
+
+    /**
+     * The first time find() finds a node: the warning that the boundary passes through the die
+     * (results no longer those of the forming process, the entry to change); else an empty
+     * string. Collective.
      */
     std::string check(const ContactOperator<dim>                  &contact,
                       const dealii::TrilinosWrappers::MPI::Vector &u,
@@ -47,6 +82,13 @@ namespace ausroll::contact
                       const unsigned int                           step,
                       const double                                 tolerance,
                       const MPI_Comm                               comm);
+
+    /** The words naming @p p (boundary, die, depth, node, step, time) that begin both the
+        warning of check() and the note of `Contact/Penetrating boundaries = add`. */
+    static std::string describe(const Penetration &p,
+                                const std::string &die_name,
+                                const unsigned int step,
+                                const double       time);
 
   private:
     struct BoundaryNode

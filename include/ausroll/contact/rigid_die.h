@@ -111,6 +111,13 @@ namespace ausroll::contact
       return *profile;
     }
 
+    /** Let workpiece boundary @p id touch this die too (nothing if all boundaries may). */
+    void add_candidate(const unsigned int id)
+    {
+      if (!candidates.empty())
+        candidates.insert(id);
+    }
+
     /** True if workpiece boundary @p id may touch this die. */
     bool is_candidate(const unsigned int id) const
     {

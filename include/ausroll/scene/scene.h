@@ -59,6 +59,7 @@ namespace ausroll::scene
     void begin_step(const double t_start) override
     {
       time = t_start;
+      step_start_time = t_start;
       contact_strategy->begin_step(system.solution_ghosted, t_start);
     }
     solver::NewtonResult solve(const double t, const double predictor_ratio) override
@@ -68,12 +69,9 @@ namespace ausroll::scene
       return newton.solve(*equilibrium, newton_log);
     }
     void                  restart_step() override { contact_strategy->restart_step(); }
-    contact::StepDecision end_of_step(const double dt) override
-    {
-      return contact_strategy->end_of_step(dt, parameters.loading.end_time, newton_log);
-    }
-    std::string  keep_last_converged(const double t_start) override;
-    unsigned int accept_step(const solver::LoadStep &step) override;
+    contact::StepDecision end_of_step(const double dt) override;
+    std::string           keep_last_converged(const double t_start) override;
+    unsigned int          accept_step(const solver::LoadStep &step) override;
     //@}
 
   private:
@@ -90,6 +88,10 @@ namespace ausroll::scene
     /** After a converged step: warn (or stop, `Loading/Stop at distorted mesh`) the first time
         the volume change at a quadrature point crosses `Loading/Volume change limit`. */
     void check_distortion();
+    /** After a converged solve (2D, `Contact/Penetrating boundaries = add`): if a boundary that
+        is not a candidate of a die lies inside it, make it a candidate, say so and return true
+        (the step is then solved again from its start). */
+    bool add_penetrating_boundaries();
     /** Output of the current (converged) state: every postprocessor's files and the VTU. */
     void write_output();
     /**
@@ -132,6 +134,8 @@ namespace ausroll::scene
     contact::CurvedDieTangent<dim> curved_die_tangent;
     /** Warns once when a boundary that is not a contact candidate passes through a die. */
     contact::NonCandidatePenetration<dim> non_candidate_penetration;
+    /** Pseudo-time at the start of the current load step. */
+    double step_start_time = 0.;
     /** `Contact/Strategy`: when contact statuses change (acts on contact). */
     std::unique_ptr<contact::StatusStrategy> contact_strategy;
     /** Declared after the system (its matrix): destroyed first (its kept direct factorisation
