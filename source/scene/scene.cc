@@ -9,6 +9,8 @@
 #include <ausroll/scene/scene.h>
 #include <ausroll/scene/setup_checks.h>
 
+#include <algorithm>
+
 #include <deal.II/base/mpi.h>
 
 namespace ausroll::scene
@@ -335,6 +337,14 @@ namespace ausroll::scene
     io::write_step_line(log, summary);
     io::write_regression_line(regression_log, step_number, row);
 
+    if (contact.active())
+      for (unsigned int k = 0; k < contact.n_dies(); ++k)
+        if (!die_touched[k])
+        {
+          const auto c = contact.die_contact(k);
+          die_touched[k] = c.n_stick + c.n_slip > 0;
+        }
+
     check_distortion();
     if constexpr (dim == 2)
       if (contact.active())
@@ -407,6 +417,7 @@ namespace ausroll::scene
       write_output();
     }
 
+    die_touched.assign(contact.active() ? contact.n_dies() : 0, false);
     start_fraction = time / parameters.loading.end_time; // done before this process started
     smallest_extent = system.smallest_extent();
     large_displacement_warned = !model->is_small_strain();
@@ -423,6 +434,31 @@ namespace ausroll::scene
         && parameters.output.verbosity != io::Verbosity::quiet)
       timer->print_summary();
     regression_log << "finished: " << step_number << " steps" << std::endl;
+
+    // A die that never touched the workpiece is a set-up error (wrong position, feed or
+    // direction): everything is written, but the run must not look like a forming result. If no
+    // die touched, the run fails; a die untouched beside others that did (a shortened run of a
+    // scene whose later die comes in later) is a warning.
+    if (!resuming && !die_touched.empty())
+    {
+      const bool any_touched
+          = std::find(die_touched.begin(), die_touched.end(), true) != die_touched.end();
+      for (unsigned int k = 0; k < die_touched.size(); ++k)
+        if (!die_touched[k])
+        {
+          const std::string message
+              = "Contact/Die " + std::to_string(k) + " (" + contact.die(k).name
+                + ") never touched the workpiece: no node was in contact with it at the end of "
+                  "any of the "
+                + std::to_string(step_number)
+                + " steps, so its force is zero throughout (the output is complete); check its "
+                  "position and Contact/Die "
+                + std::to_string(k) + "/Motion";
+          if (!any_touched)
+            throw RunFailure(message);
+          log << "warning: " << message << std::endl;
+        }
+    }
   }
 
   template class Scene<2>;

@@ -156,6 +156,9 @@ namespace ausroll::scene
     double start_fraction = 0.;               ///< fraction of the run done before this process
     double smallest_extent = 0.;              ///< of the workpiece (small-strain warning)
     bool   large_displacement_warned = false; ///< the small-strain warning was given
+    /** Per die: a node was closed on it at the end of some step of this process (a run that
+        ends with a die never touched stops with a message; not checked after --resume). */
+    std::vector<bool> die_touched;
 
     /** History columns, CSV files and VTU fields, in their fixed order (setup_postprocessing). */
     std::unique_ptr<io::PostprocessorSet<dim>> postprocessors;
