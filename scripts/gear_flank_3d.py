@@ -27,64 +27,26 @@ import csv
 import math
 import os
 import sys
-import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gear_flank_analysis import gear_data  # noqa: E402
-
-
-def read_step(directory, step):
-    import vtk
-    from vtk.util.numpy_support import vtk_to_numpy
-
-    pvd = ET.parse(os.path.join(directory, "solution.pvd")).getroot()
-    datasets = list(pvd.iter("DataSet"))
-    ds = datasets[step]
-    reader = (vtk.vtkXMLUnstructuredGridReader() if ds.get("file").endswith(".vtu")
-              else vtk.vtkXMLPUnstructuredGridReader())
-    reader.SetFileName(os.path.join(directory, ds.get("file")))
-    reader.Update()
-    grid = reader.GetOutput()
-    x = vtk_to_numpy(grid.GetPoints().GetData())
-    u = vtk_to_numpy(grid.GetPointData().GetArray("displacement"))
-    pressure = grid.GetPointData().GetArray("contact_pressure")
-    p = vtk_to_numpy(pressure) if pressure is not None else [0.0] * len(x)
-    seen, nodes = set(), []
-    for k in range(len(x)):
-        X = [float(x[k][d] - u[k][d]) for d in range(3)]
-        key = tuple(round(v, 5) for v in X)
-        if key in seen:
-            continue
-        seen.add(key)
-        nodes.append((X, [float(v) for v in x[k]], float(p[k])))
-    return float(ds.get("timestep")), nodes
+import vtu_io  # noqa: E402
+from gear_flank_analysis import Flank, add_gear_options  # noqa: E402
 
 
 def analyse(args):
-    rp, rb, rt, theta_h = gear_data(args)
-    axis = math.radians(args.axis_angle)
-    sign = 1.0 if args.flank == "positive" else -1.0
-    time, nodes = read_step(args.directory, args.step)
+    """(time, [(Z, R, d_n, u_t, u_z, p_n)], r_p) of the flank nodes at output step args.step."""
+    flank = Flank(args)
+    time, path = vtu_io.datasets(args.directory)[args.step]
     rows = []
-    for X, x, p_n in nodes:
-        R = math.hypot(X[0], X[1])
-        if R < rb * (1.0 + 1e-9) or R > rt * (1.0 - 1e-9) or R < args.min_radius:
+    for X, x, p_n in vtu_io.unique_nodes(vtu_io.read_grid(path)):
+        m = flank.measure(X, x)
+        if m is None:
             continue
-        phi_ref = math.remainder(math.atan2(X[1], X[0]) - axis, 2.0 * math.pi)
-        if abs(sign * phi_ref - theta_h(R)) * R > args.tolerance:
-            continue
-        r = math.hypot(x[0], x[1])
-        phi = math.remainder(math.atan2(x[1], x[0]) - axis, 2.0 * math.pi)
-        d_n = rb * (sign * phi - theta_h(r))
-        u = math.sqrt(R * R / (rb * rb) - 1.0)
-        th = axis + sign * theta_h(R)
-        t = (math.cos(th) + sign * u * math.sin(th), math.sin(th) - sign * u * math.cos(th))
-        tn = math.hypot(*t)
-        u_t = ((x[0] - X[0]) * t[0] + (x[1] - X[1]) * t[1]) / tn
+        R, _, d_n, u_t = m
         # reference z from single-precision VTU values: layers are >= 0.1 mm apart
         rows.append((round(X[2], 2), R, d_n, u_t, x[2] - X[2], p_n))
     rows.sort()
-    return time, rows, rp
+    return time, rows, flank.rp
 
 
 def layers(rows):
@@ -108,18 +70,11 @@ def main():
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("directory")
     p.add_argument("--step", type=int, default=-1)
-    p.add_argument("--flank", choices=["negative", "positive"], default="negative")
     p.add_argument("--radii", type=float, nargs="*", default=[45.5, 46.32, 47.5, 48.5])
     p.add_argument("--plot")
     p.add_argument("--title", default="3D gear flank")
     p.add_argument("--compare-2d")
-    p.add_argument("--teeth", type=int, default=31)
-    p.add_argument("--diametral-pitch", type=float, default=8.5)
-    p.add_argument("--pressure-angle", type=float, default=22.0)
-    p.add_argument("--thickness", type=float, default=4.69392)
-    p.add_argument("--axis-angle", type=float, default=90.0)
-    p.add_argument("--min-radius", type=float, default=0.0)
-    p.add_argument("--tolerance", type=float, default=2e-4)
+    add_gear_options(p)
     args = p.parse_args()
     time, rows, rp = analyse(args)
     if not rows:

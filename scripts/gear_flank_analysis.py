@@ -33,6 +33,9 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import vtu_io  # noqa: E402
+
 
 def gear_data(args):
     m = 25.4 / args.diametral_pitch
@@ -49,71 +52,66 @@ def gear_data(args):
     return rp, rb, rp + m, theta_h
 
 
-def read_vtu_steps(directory):
-    """(step, time, [(X, Y, x, y, p_n)]) for every dataset of solution.pvd (rank-0 pieces merged)."""
-    import xml.etree.ElementTree as ET
+def add_gear_options(parser):
+    """The gear data and flank selection options shared by the flank scripts."""
+    parser.add_argument("--flank", choices=["negative", "positive"], default="negative")
+    parser.add_argument("--teeth", type=int, default=31)
+    parser.add_argument("--diametral-pitch", type=float, default=8.5)
+    parser.add_argument("--pressure-angle", type=float, default=22.0)
+    parser.add_argument("--thickness", type=float, default=4.69392)
+    parser.add_argument("--axis-angle", type=float, default=90.0)
+    parser.add_argument("--min-radius", type=float, default=0.0)
+    parser.add_argument("--tolerance", type=float, default=2e-4,
+                        help="distance (mm) of a reference node from the involute to count as flank node")
 
-    import vtk
-    from vtk.util.numpy_support import vtk_to_numpy
 
-    pvd = ET.parse(os.path.join(directory, "solution.pvd")).getroot()
-    steps = []
-    for i, ds in enumerate(pvd.iter("DataSet")):
-        time = float(ds.get("timestep"))
-        pvtu = os.path.join(directory, ds.get("file"))
-        reader = vtk.vtkXMLPUnstructuredGridReader()
-        reader.SetFileName(pvtu)
-        reader.Update()
-        grid = reader.GetOutput()
-        x = vtk_to_numpy(grid.GetPoints().GetData())
-        u = vtk_to_numpy(grid.GetPointData().GetArray("displacement"))
-        pressure = grid.GetPointData().GetArray("contact_pressure")
-        p = vtk_to_numpy(pressure) if pressure is not None else [0.0] * len(x)
-        seen, nodes = set(), []
-        for k in range(len(x)):
-            key = (round(float(x[k][0]), 5), round(float(x[k][1]), 5))
-            if key in seen:
-                continue
-            seen.add(key)
-            X, Y = float(x[k][0] - u[k][0]), float(x[k][1] - u[k][1])
-            nodes.append((X, Y, float(x[k][0]), float(x[k][1]), float(p[k])))
-        steps.append((i, time, nodes))
-    return steps
+class Flank:
+    """The involute flank chosen by the options of add_gear_options."""
+
+    def __init__(self, args):
+        self.rp, self.rb, self.rt, self.theta_h = gear_data(args)
+        self.axis = math.radians(args.axis_angle)
+        self.sign = 1.0 if args.flank == "positive" else -1.0
+        self.min_radius = args.min_radius
+        self.tolerance = args.tolerance
+
+    def measure(self, X, x):
+        """(R, roll angle u, d_n, u_t) of a node with reference position X and current position x
+        (their first two components, the plane of the gear), or None when X does not lie on the
+        involute part of the flank (fillet, lands, radial part)."""
+        rb, sign = self.rb, self.sign
+        R = math.hypot(X[0], X[1])
+        if R < rb * (1.0 + 1e-9) or R > self.rt * (1.0 - 1e-9) or R < self.min_radius:
+            return None
+        phi_ref = math.remainder(math.atan2(X[1], X[0]) - self.axis, 2.0 * math.pi)
+        # VTU coordinates are single precision: 1e-6 relative is about 5e-5 mm
+        if abs(sign * phi_ref - self.theta_h(R)) * R > self.tolerance:
+            return None
+        r = math.hypot(x[0], x[1])
+        phi = math.remainder(math.atan2(x[1], x[0]) - self.axis, 2.0 * math.pi)
+        d_n = rb * (sign * phi - self.theta_h(r)) if r > rb else float("nan")
+        # tangent towards the tip at the reference point: e_r - u e_theta (positive flank)
+        u = math.sqrt(R * R / (rb * rb) - 1.0)
+        th = self.axis + sign * self.theta_h(R)
+        er = (math.cos(th), math.sin(th))
+        et = (-math.sin(th), math.cos(th))
+        t = (er[0] - sign * u * et[0], er[1] - sign * u * et[1])
+        tn = math.hypot(*t)
+        u_t = ((x[0] - X[0]) * t[0] + (x[1] - X[1]) * t[1]) / tn
+        return R, u, d_n, u_t
 
 
 def analyse(args):
-    rp, rb, rt, theta_h = gear_data(args)
-    axis = math.radians(args.axis_angle)
-    sign = 1.0 if args.flank == "positive" else -1.0
-    if not os.path.exists(os.path.join(args.directory, "solution.pvd")):
-        raise SystemExit(f"gear_flank_analysis.py: no solution.pvd in {args.directory}")
+    """[(step, time, R, roll angle, d_n, u_t, p_n)] of the flank nodes at every output step."""
+    flank = Flank(args)
     results = []
-    for step, time, nodes in read_vtu_steps(args.directory):
-        for X, Y, x, y, p_n in nodes:
-            R = math.hypot(X, Y)
-            phi_ref = math.remainder(math.atan2(Y, X) - axis, 2.0 * math.pi)
-            # reference point on the involute of the chosen flank (not the fillet, lands, radial part)
-            if R < rb * (1.0 + 1e-9) or R > rt * (1.0 - 1e-9):
-                continue
-            # VTU coordinates are single precision: 1e-6 relative is about 5e-5 mm
-            if abs(sign * phi_ref - theta_h(R)) * R > args.tolerance:
-                continue
-            if R < args.min_radius:
-                continue
-            r = math.hypot(x, y)
-            phi = math.remainder(math.atan2(y, x) - axis, 2.0 * math.pi)
-            d_n = rb * (sign * phi - theta_h(r)) if r > rb else float("nan")
-            # tangent towards the tip at the reference point: e_r - u e_theta (positive flank)
-            u = math.sqrt(R * R / (rb * rb) - 1.0)
-            th = axis + sign * theta_h(R)
-            er = (math.cos(th), math.sin(th))
-            et = (-math.sin(th), math.cos(th))
-            t = (er[0] - sign * u * et[0], er[1] - sign * u * et[1])
-            tn = math.hypot(*t)
-            u_t = ((x - X) * t[0] + (y - Y) * t[1]) / tn
-            results.append((step, time, R, u, d_n, u_t, p_n))
+    for step, (time, path) in enumerate(vtu_io.datasets(args.directory)):
+        for X, x, p_n in vtu_io.unique_nodes(vtu_io.read_grid(path)):
+            m = flank.measure(X, x)
+            if m is not None:
+                results.append((step, time) + m + (p_n,))
     results.sort()
-    return results, rp
+    return results, flank.rp
 
 
 def summary(results, rp):
@@ -170,17 +168,9 @@ def plot(results, rp, filename, title):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("directory")
-    p.add_argument("--flank", choices=["negative", "positive"], default="negative")
     p.add_argument("--plot")
     p.add_argument("--title", default="gear flank")
-    p.add_argument("--teeth", type=int, default=31)
-    p.add_argument("--diametral-pitch", type=float, default=8.5)
-    p.add_argument("--pressure-angle", type=float, default=22.0)
-    p.add_argument("--thickness", type=float, default=4.69392)
-    p.add_argument("--axis-angle", type=float, default=90.0)
-    p.add_argument("--min-radius", type=float, default=0.0)
-    p.add_argument("--tolerance", type=float, default=2e-4,
-                   help="distance (mm) of a reference node from the involute to count as flank node")
+    add_gear_options(p)
     args = p.parse_args()
     results, rp = analyse(args)
     if not results:

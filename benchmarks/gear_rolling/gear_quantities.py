@@ -24,25 +24,20 @@ import glob
 import math
 import os
 import sys
-import xml.etree.ElementTree as ET
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import gear_flank_analysis as gfa  # noqa: E402
+import vtu_io  # noqa: E402
 
 
 def plastic_zone(directory, args):
-    import vtk
     from vtk.util.numpy_support import vtk_to_numpy
 
-    datasets = list(ET.parse(os.path.join(directory, "solution.pvd")).getroot().iter("DataSet"))
-    r = vtk.vtkXMLPUnstructuredGridReader()
-    r.SetFileName(os.path.join(directory, datasets[-1].get("file")))
-    r.Update()
-    grid = r.GetOutput()
+    grid = vtu_io.read_grid(vtu_io.datasets(directory)[-1][1])
     x = vtk_to_numpy(grid.GetPoints().GetData())
-    u = vtk_to_numpy(grid.GetPointData().GetArray("displacement"))
-    ep = vtk_to_numpy(grid.GetPointData().GetArray("equivalent_plastic_strain"))
+    u = vtu_io.point_array(grid, "displacement")
+    ep = vtu_io.point_array(grid, "equivalent_plastic_strain")
     rp, rb, ra, theta_h = gfa.gear_data(args)
     axis = math.radians(args.axis_angle)
     sign = 1.0 if args.flank == "positive" else -1.0
@@ -81,14 +76,7 @@ def main():
     p = argparse.ArgumentParser()
     p.add_argument("directory")
     p.add_argument("--threshold", type=float, default=0.002)
-    p.add_argument("--flank", choices=["negative", "positive"], default="negative")
-    p.add_argument("--teeth", type=int, default=31)
-    p.add_argument("--diametral-pitch", type=float, default=8.5)
-    p.add_argument("--pressure-angle", type=float, default=22.0)
-    p.add_argument("--thickness", type=float, default=4.69392)
-    p.add_argument("--axis-angle", type=float, default=90.0)
-    p.add_argument("--tolerance", type=float, default=2e-4)
-    p.add_argument("--min-radius", type=float, default=0.0)
+    gfa.add_gear_options(p)
     args = p.parse_args()
     results, rp = gfa.analyse(args)
     s = gfa.summary(results, rp)
