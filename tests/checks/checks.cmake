@@ -697,3 +697,12 @@ ausroll_add_script_check(NAME disk_rolling_3d_short SCRIPT ${AUSROLL_CHECKS_DIR}
 # Short 3D round-faced die run on 1 and 2 ranks: every history column within 1e-8 of its largest.
 ausroll_add_parallel_check(NAME disk_rolling_3d_round_short_np2
   PRM ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_3d_round_short.prm HISTORY out/history.csv)
+
+# Adaptivity following the die in 3D (issue 15, item 4): the short round-faced die run with the
+# contact band refinement (band 6 mm, level 1, re-adapted every step, 10 degrees rolled): mesh
+# adapted while rolling, every output sub-cell within 3 mm of a closed contact node at level 1,
+# force sign, Coulomb cone per node (1e-8); np = 2 equals np = 1 to 1e-8. About 21 s CPU each.
+ausroll_add_script_check(NAME disk_rolling_3d_round_adaptive_short
+  SCRIPT ${AUSROLL_CHECKS_DIR}/check_disk_rolling_3d_adaptive.py)
+ausroll_add_parallel_check(NAME disk_rolling_3d_round_adaptive_short_np2
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_3d_round_adaptive_short.prm HISTORY out/history.csv)
