@@ -697,3 +697,21 @@ ausroll_add_script_check(NAME disk_rolling_3d_short SCRIPT ${AUSROLL_CHECKS_DIR}
 # Short 3D round-faced die run on 1 and 2 ranks: every history column within 1e-8 of its largest.
 ausroll_add_parallel_check(NAME disk_rolling_3d_round_short_np2
   PRM ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_3d_round_short.prm HISTORY out/history.csv)
+
+# Adaptivity following the die in 3D (issue 15, item 4): the short round-faced die run with the
+# contact band refinement (band 6 mm, level 1, re-adapted every step, 10 degrees rolled): mesh
+# adapted while rolling, every output sub-cell within 3 mm of a closed contact node at level 1,
+# force sign, Coulomb cone per node (1e-8). About 21 s CPU. The np = 2 twin stops after two rolling
+# steps (t = 6: refinement at the die and material-point transfer on two ranks) and equals np = 1
+# to 1e-8; about 45 s CPU (14.8 s on 1 rank + 29.4 s on 2 ranks, measured on the loaded machine).
+ausroll_add_script_check(NAME disk_rolling_3d_round_adaptive_short
+  SCRIPT ${AUSROLL_CHECKS_DIR}/check_disk_rolling_3d_adaptive.py)
+set(_disk3d_adaptive_np2 ${CMAKE_CURRENT_BINARY_DIR}/disk_rolling_3d_round_adaptive_np2.prm)
+execute_process(COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/scripts/prm_variant.py
+    ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_3d_round_adaptive_short.prm ${_disk3d_adaptive_np2}
+    "Loading/End time = 6" "Loading/Number of steps = 6" "Output/Write VTU = false"
+  COMMAND_ERROR_IS_FATAL ANY)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+  ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_3d_round_adaptive_short.prm)
+ausroll_add_parallel_check(NAME disk_rolling_3d_round_adaptive_short_np2
+  PRM ${_disk3d_adaptive_np2} HISTORY out/history.csv)
