@@ -554,36 +554,6 @@ namespace ausroll::contact
   }
 
   template <int dim>
-  unsigned int ContactOperator<dim>::slip_overloaded_sticking_nodes()
-  {
-    // Trial-force slip rule (NestedActiveSet): only the stick -> slip criterion of
-    // update_statuses(), applied to every sticking node in compression, fresh or not.
-    unsigned int changes = 0;
-    for (Node &n : nodes)
-    {
-      if (n.current.status != ContactStatus::stick || n.changes >= parameters.max_status_changes
-          || n.current.Rn < -force_tolerance)
-        continue;
-      const FrictionLaw &friction = *dies[n.current.die]->friction;
-      if (!friction.switches_stick_slip())
-        continue;
-      if (friction
-              .respond(n.current.Rn,
-                       dim == 2 ? n.current.Rt[0] : magnitude(n.current.Rt),
-                       n.area,
-                       force_tolerance)
-              .slip)
-      {
-        switch_status(n, ContactStatus::slip);
-        if (n.owned)
-          ++changes;
-      }
-    }
-    build_row_transforms();
-    return Utilities::MPI::sum(changes, comm);
-  }
-
-  template <int dim>
   typename ContactOperator<dim>::Event ContactOperator<dim>::node_event(const Node &n) const
   {
     // Linear interpolation between the committed state (fraction 0) and the iterate (fraction 1)

@@ -92,33 +92,6 @@ namespace ausroll::contact
     nodes.hold_changed_nodes(true);
   }
 
-  void NestedActiveSet::begin_step(const ContactStatusSet::Vector &u, const double t_start)
-  {
-    StatusStrategy::begin_step(u, t_start);
-    iterates_in_attempt = 0;
-  }
-
-  void NestedActiveSet::begin_iterate(const double t)
-  {
-    StatusStrategy::begin_iterate(t);
-    ++iterates_in_attempt;
-  }
-
-  unsigned int NestedActiveSet::update_at_iterate()
-  {
-    // Trial-force slip rule (see the class documentation): once per step attempt.
-    if (iterates_in_attempt != trial_force_iterate)
-      return 0;
-    ++iterates_in_attempt;
-    return nodes.slip_overloaded_sticking_nodes();
-  }
-
-  void NestedActiveSet::restart_step()
-  {
-    StatusStrategy::restart_step();
-    iterates_in_attempt = 0;
-  }
-
   void NestedActiveSet::update_geometry(const ContactStatusSet::Vector &u)
   {
     // Penetrating open nodes close at every iterate, but only those that have not changed in

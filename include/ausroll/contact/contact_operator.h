@@ -214,7 +214,6 @@ namespace ausroll::contact
      * all ranks.
      */
     unsigned int update_statuses() override;
-    unsigned int slip_overloaded_sticking_nodes() override;
 
     /**
      * Load-increment ratio: the fraction alpha in [0, 1] of the current step at which the first

@@ -71,12 +71,6 @@ namespace ausroll::contact
         slip sticks); returns the number of changes. */
     virtual unsigned int update_statuses() = 0;
 
-    /** Trial-force slip rule (NestedActiveSet): switch every sticking node whose tangential
-        reaction exceeds its friction limit to slip, whether or not it changed in this step;
-        returns the number of changes. The default (a status set without friction) changes
-        nothing. */
-    virtual unsigned int slip_overloaded_sticking_nodes() { return 0; }
-
     /** Fraction of the current step in [0, 1] at which the first node changes status (linear
         interpolation from the committed state); 1 if none. */
     virtual double event_ratio() const = 0;
@@ -197,31 +191,10 @@ namespace ausroll::contact
   public:
     explicit NestedActiveSet(ContactStatusSet &nodes);
 
-    /**
-     * Trial-force slip rule. The nested set judges statuses only at converged states, so a node
-     * that converged in stick keeps that constraint through the whole next pass even when the die
-     * point it is tied to slides on (gear tip: ~7 um per step); Newton then drags the node into
-     * an inverted element and the step is cut back (doc/scenes/gear_rolling.md). The rule: at the
-     * first assembly after the first Newton correction of a step attempt (the displacement then
-     * satisfies the new stick constraints, so the stick reactions are the trial forces of the
-     * step), every sticking node whose tangential reaction exceeds the Coulomb bound slips, and
-     * the system is re-assembled; the node is then held for the rest of the pass as any changed
-     * node.
-     */
-    static constexpr unsigned int trial_force_iterate = 2;
-
-    void         begin_step(const ContactStatusSet::Vector &u, const double t_start) override;
-    void         begin_iterate(const double t) override;
-    unsigned int update_at_iterate() override;
-    void         restart_step() override;
     void         update_geometry(const ContactStatusSet::Vector &u) override;
     unsigned int update_at_convergence(const ContactStatusSet::Vector &u,
                                        dealii::ConditionalOStream     &log) override;
     bool         backtrack_with_small_constraint_gaps() const override;
-
-  private:
-    /** Assemblies (begin_iterate() calls) since the step attempt began. */
-    unsigned int iterates_in_attempt = 0;
   };
 
   /**
