@@ -30,6 +30,10 @@ namespace ausroll::solver
     // full Newton budget; more passes than this means the constraints cycle.
     constexpr unsigned int max_outer_passes = 30;
     unsigned int           pass_start = 0;
+    // Residuals relative to the force level at each iterate ('|' marks a new status pass): the
+    // summary line at convergence says where the solves of the step went.
+    std::ostringstream history;
+    unsigned int       line_searches = 0;
 
     for (unsigned int it = 0;; ++it)
     {
@@ -46,6 +50,8 @@ namespace ausroll::solver
         log << "  constraint gap " << problem.constraint_violation();
       log << std::defaultfloat << std::endl;
 
+      history << (it > 0 ? " " : "") << std::scientific << std::setprecision(1)
+              << norm / std::max(reference, std::numeric_limits<double>::min());
       if (!std::isfinite(norm))
       {
         result.reason = "residual is not a finite number";
@@ -72,6 +78,10 @@ namespace ausroll::solver
         changes = problem.update_constraints_at_convergence(log);
         if (changes == 0 && converged)
         {
+          log << "    Newton summary: " << result.iterations << " solves, " << result.outer_passes
+              << " status passes, " << line_searches
+              << " line searches; |r| / force level:" << (history.str().empty() ? "" : " ")
+              << history.str() << std::endl;
           result.converged = true;
           return result;
         }
@@ -102,6 +112,8 @@ namespace ausroll::solver
         if (!constraints_ok)
           log << "  constraint gap " << problem.constraint_violation();
         log << std::defaultfloat << std::endl;
+        history << " |" << std::scientific << std::setprecision(1)
+                << norm / std::max(problem.reference_force(), std::numeric_limits<double>::min());
         // fall through: iterate with the new constraints
       }
       else
@@ -168,6 +180,8 @@ namespace ausroll::solver
           problem.apply_increment(step);
           admissible = problem.assemble(true, message);
         }
+      if (step < 1.)
+        ++line_searches;
       if (step < 1.)
         log << "    line search: step length " << step << std::endl;
       if (!admissible)
