@@ -34,7 +34,7 @@ import os
 import subprocess
 import sys
 
-from checklist import Checklist  # tests/checks/checklist.py (next to this script)
+from checklist import Checklist, CoulombCone  # tests/checks/checklist.py (next to this script)
 
 MU = 0.3
 
@@ -99,19 +99,10 @@ def main():
         checks(f"{die}: feed mirror-symmetric side-face edge (worst {worst_sym:.2g} of |u|)",
                worst_sym <= 1e-6)
         checks(f"{die}: feed tangential force {worst_t:.2g} |F| <= 1e-9", worst_t <= 1e-9)
-        contact = [line for line in open(f"{die}/out/contact_0001.csv") if not line.startswith("#")]
-        worst_cone, worst_slip, closed = 0.0, 0.0, 0
-        for r in csv.DictReader(contact):
-            if r["status"] == "0":
-                continue
-            closed += 1
-            rn = float(r["R_n"])
-            rt = math.hypot(float(r["R_t1"]), float(r["R_t2"]))
-            worst_cone = max(worst_cone, rt - MU * rn * (1 + 1e-8))
-            if r["status"] == "2":
-                worst_slip = max(worst_slip, abs(rt - MU * rn) / (MU * rn))
-        checks(f"{die}: {closed} closed nodes, |R_T| <= mu R_n (excess {worst_cone:.3g} N)",
-               closed > 0 and worst_cone <= 0.0)
+        cone = CoulombCone([f"{die}/out/contact_0001.csv"], MU)
+        worst_cone, worst_slip, closed = cone.excess, cone.slip, len(cone.closed)
+        checks(f"{die}: {closed} closed nodes, |R_T| <= mu R_n (|R_T| / (mu R_n) - 1 = {worst_cone:.3g})",
+               closed > 0 and worst_cone <= 1e-8)
         checks(f"{die}: slipping nodes |R_T| = mu R_n (worst {worst_slip:.2g})", worst_slip <= 1e-8)
         side_uz[die] = float(rows[-1]["side90_uz"])
         checks(f"{die}: side-face edge under the die moves outwards, u_z = {side_uz[die]:.4g} mm",

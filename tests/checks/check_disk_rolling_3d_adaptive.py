@@ -29,7 +29,7 @@ import sys
 import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checklist import Checklist  # noqa: E402
+from checklist import Checklist, CoulombCone  # noqa: E402
 
 MU = 0.3
 MAX_LEVEL = 1
@@ -77,19 +77,10 @@ def main():
     radial = [float(r["die_roll_force_radial"]) for r in rows]
     checks(f"force_radial < 0 at every step (max {max(radial):.6g} N)", all(f < 0 for f in radial))
 
-    contact = [line for line in open("out/contact_0001.csv") if not line.startswith("#")]
-    nodes, worst_cone, worst_slip = [], 0.0, 0.0
-    for r in csv.DictReader(contact):
-        if r["status"] == "0":
-            continue
-        nodes.append((float(r["x"]), float(r["y"]), float(r["z"])))
-        rn = float(r["R_n"])
-        rt = math.hypot(float(r["R_t1"]), float(r["R_t2"]))
-        worst_cone = max(worst_cone, rt - MU * rn * (1 + 1e-8))
-        if r["status"] == "2":
-            worst_slip = max(worst_slip, abs(rt - MU * rn) / (MU * rn))
-    checks(f"{len(nodes)} closed nodes, |R_T| <= mu R_n (excess {worst_cone:.3g} N)",
-           len(nodes) > 0 and worst_cone <= 0.0)
+    cone = CoulombCone(["out/contact_0001.csv"], MU)
+    nodes, worst_cone, worst_slip = cone.closed, cone.excess, cone.slip
+    checks(f"{len(nodes)} closed nodes, |R_T| <= mu R_n (|R_T| / (mu R_n) - 1 = {worst_cone:.3g})",
+           len(nodes) > 0 and worst_cone <= 1e-8)
     checks(f"slipping nodes |R_T| = mu R_n (worst {worst_slip:.2g})", worst_slip <= 1e-8)
 
     a = arrays("out/solution_0001.0.vtu")

@@ -44,7 +44,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checklist import Checklist  # noqa: E402
+from checklist import Checklist, CoulombCone  # noqa: E402
 
 
 def run(ausroll, prm, directory):
@@ -100,18 +100,8 @@ def short_check(a):
     checks(f"force sign: F_x < 0 at every loaded step (not at t = {positive})", not positive)
     checks(f"Coulomb bound, total force: max |F_t| / F_n = {worst:.4f} <= "
            f"{(1 + a.mu_margin) * a.mu:.4f}", worst <= (1 + a.mu_margin) * a.mu)
-    nodes, worst_node, worst_slip = 0, 0.0, 0.0
-    for name in sorted(glob.glob(os.path.join("half", "out", "contact_*.csv"))):
-        lines = [line for line in open(name) if not line.startswith("#")]
-        for r in csv.DictReader(lines):
-            if int(r["status"]) == 0:
-                continue
-            nodes += 1
-            r_n = float(r["R_n"])
-            r_t = math.hypot(float(r["R_t1"]), float(r["R_t2"]))
-            worst_node = max(worst_node, r_t / (a.mu * r_n) - 1.0 if r_n > 0.0 else math.inf)
-            if int(r["status"]) == 2:
-                worst_slip = max(worst_slip, abs(r_t / (a.mu * r_n) - 1.0))
+    cone = CoulombCone(sorted(glob.glob(os.path.join("half", "out", "contact_*.csv"))), a.mu)
+    nodes, worst_node, worst_slip = len(cone.closed), cone.excess, cone.slip
     checks(f"Coulomb bound per node: {nodes} node-steps in contact, max |R_t| / (mu R_n) - 1 = "
            f"{worst_node:.2e} <= 1e-8; slipping nodes |R_t| = mu R_n within {worst_slip:.2e}",
            nodes > 0 and worst_node <= 1e-8 and worst_slip <= 1e-8)
