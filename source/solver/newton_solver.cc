@@ -50,8 +50,9 @@ namespace ausroll::solver
         log << "  constraint gap " << problem.constraint_violation();
       log << std::defaultfloat << std::endl;
 
-      history << (it > 0 ? " " : "") << std::scientific << std::setprecision(1)
-              << norm / std::max(reference, std::numeric_limits<double>::min());
+      if (log.is_active())
+        history << (it > 0 ? " " : "") << std::scientific << std::setprecision(1)
+                << norm / std::max(reference, std::numeric_limits<double>::min());
       if (!std::isfinite(norm))
       {
         result.reason = "residual is not a finite number";
@@ -112,8 +113,9 @@ namespace ausroll::solver
         if (!constraints_ok)
           log << "  constraint gap " << problem.constraint_violation();
         log << std::defaultfloat << std::endl;
-        history << " |" << std::scientific << std::setprecision(1)
-                << norm / std::max(problem.reference_force(), std::numeric_limits<double>::min());
+        if (log.is_active())
+          history << " |" << std::scientific << std::setprecision(1)
+                  << norm / std::max(problem.reference_force(), std::numeric_limits<double>::min());
         // fall through: iterate with the new constraints
       }
       else
@@ -181,9 +183,10 @@ namespace ausroll::solver
           admissible = problem.assemble(true, message);
         }
       if (step < 1.)
+      {
         ++line_searches;
-      if (step < 1.)
         log << "    line search: step length " << step << std::endl;
+      }
       if (!admissible)
       {
         result.reason = message;
