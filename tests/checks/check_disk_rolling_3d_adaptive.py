@@ -7,7 +7,8 @@ Runs tests/checks/scenes/disk_rolling_3d_round_adaptive_short.prm (contact band 
 level 1, re-adapted every step, 10 degrees of rolling after the feed) and checks:
   - the mesh was adapted while the die rolled: more cells at the end than at the end of the feed
     (the band is refined ahead of the die; cells the die has left stay refined here, since cells
-    are only coarsened beyond twice the band plus their size, 23 mm, more than the 7.6 mm rolled);
+    are only coarsened beyond twice the sum of the band and their size, 2 (6 + 11.4) = 35 mm,
+    more than the 7.6 mm rolled);
   - the refined band is at the die: every output sub-cell (the level field of the last VTU, written per
     point of each deal.II patch) whose
     centre lies within 3 mm (half the band) of a closed contact node of the last contact CSV is at
