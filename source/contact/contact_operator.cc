@@ -650,7 +650,7 @@ namespace ausroll::contact
   }
 
   template <int dim>
-  void ContactOperator<dim>::commit()
+  void ContactOperator<dim>::commit(const bool new_step)
   {
     for (Node &n : nodes)
     {
@@ -665,6 +665,9 @@ namespace ausroll::contact
           for (unsigned int a = 0; a < dim - 1; ++a)
             n.next_direction[a] = n.direction_pending ? slip[a] / size : 0.;
         }
+      if (new_step)
+        n.closed_in_last_step
+            = n.committed.status == ContactStatus::open && n.current.status != ContactStatus::open;
       n.committed = n.current;
       // die coordinate and gap of the converged geometry; an open node carries no force
       n.committed.s = n.projection.s;
@@ -729,6 +732,28 @@ namespace ausroll::contact
       n.changes = 0;
     }
     build_row_transforms();
+  }
+
+  template <int dim>
+  unsigned int ContactOperator<dim>::release_fresh_sticks()
+  {
+    // 2D only: a 3D slip needs its start point and direction of the converged geometry
+    // (update_slip_direction()), which a reset after a failed solve does not restore.
+    if constexpr (dim == 3)
+      return 0;
+    unsigned int switched = 0;
+    for (Node &n : nodes)
+      if (n.closed_in_last_step && n.changes < parameters.max_status_changes
+          && n.current.status == ContactStatus::stick && n.current.Rn > 0.
+          && magnitude(n.current.Rt) > 0. && dies[n.current.die]->friction->switches_stick_slip())
+      {
+        // after reset(): the committed reactions give the sign of the friction force
+        switch_status(n, ContactStatus::slip);
+        if (n.owned)
+          ++switched;
+      }
+    build_row_transforms();
+    return Utilities::MPI::sum(switched, comm);
   }
 
   template <int dim>
@@ -901,10 +926,10 @@ namespace ausroll::contact
 
   namespace
   {
-    /** Doubles per node in pack_state(): 13 in 2D (the layout of the checkpoints so far), 3D
-        with the slip start point. */
+    /** Doubles per node in pack_state(): 14 in 2D, 3D with the slip start point; the last one
+        is Node::closed_in_last_step (checkpoints before 2026-12-02 had 13 in 2D). */
     template <int dim>
-    constexpr unsigned int packed_node_size = 2 * dim + 2 * (dim - 1) + 7 + (dim == 3 ? dim : 0);
+    constexpr unsigned int packed_node_size = 2 * dim + 2 * (dim - 1) + 8 + (dim == 3 ? dim : 0);
   } // namespace
 
   template <int dim>
@@ -914,7 +939,8 @@ namespace ausroll::contact
     for (const Node &n : nodes)
       if (n.owned && n.committed.status != ContactStatus::open)
       {
-        // 2D: X, Y, status, die, stick x, y, sign, s, gap, gap valid, R_n, R_t, current s
+        // 2D: X, Y, status, die, stick x, y, sign, s, gap, gap valid, R_n, R_t, current s,
+        // closed in the last step
         for (unsigned int d = 0; d < dim; ++d)
           local.push_back(n.X[d]);
         local.push_back(double(static_cast<int>(n.committed.status)));
@@ -932,6 +958,7 @@ namespace ausroll::contact
         if constexpr (dim == 3)
           for (unsigned int d = 0; d < dim; ++d)
             local.push_back(n.current.start[d]);
+        local.push_back(n.closed_in_last_step ? 1. : 0.);
       }
     std::vector<double> all;
     for (const auto &part : Utilities::MPI::all_gather(comm, local))
@@ -979,6 +1006,7 @@ namespace ausroll::contact
       if constexpr (dim == 3)
         for (unsigned int c = 0; c < dim; ++c)
           n.current.start[c] = *d++;
+      n.closed_in_last_step = *d++ != 0.;
       n.changes = 0;
     }
     build_row_transforms();

@@ -60,6 +60,11 @@ namespace ausroll::contact
     nodes.reset();
   }
 
+  unsigned int StatusStrategy::release_after_failure()
+  {
+    return 0;
+  }
+
   // ------------------------------------------------------------------ active set
 
   void ActiveSet::begin_iterate(const double t)
@@ -120,6 +125,15 @@ namespace ausroll::contact
   {
     // curved dies leave second-order gaps after each iterate
     return true;
+  }
+
+  unsigned int NestedActiveSet::release_after_failure()
+  {
+    // A node that closed in stick at the end of the last step is dragged by its stick point over
+    // the whole Newton pass (its status is judged only at the converged state): near a gear tip
+    // that drag inverts elements. Solved again with these nodes slipping, the converged state
+    // judges them as any other (a reversed slip sticks again).
+    return nodes.release_fresh_sticks();
   }
 
   // ------------------------------------------------------------------ load-increment ratio

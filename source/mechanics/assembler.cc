@@ -79,10 +79,12 @@ namespace ausroll::mechanics
     const TrilinosWrappers::MPI::Vector *solution = nullptr;
     double                               time = 0.;
     MaterialPointStorage<dim>           *material_points = nullptr;
-    const AffineConstraints<double>     *hanging = nullptr;
-    const AffineConstraints<double>     *newton = nullptr;
-    const RowTransforms<dim>            *row_transforms = nullptr;
-    const AssemblyTargets               *targets = nullptr;
+    // the material points by active cell index (AssemblyCache::points), or nullptr
+    material::MaterialPoint *const  *point_table = nullptr;
+    const AffineConstraints<double> *hanging = nullptr;
+    const AffineConstraints<double> *newton = nullptr;
+    const RowTransforms<dim>        *row_transforms = nullptr;
+    const AssemblyTargets           *targets = nullptr;
     // the cache to read the cell part from (reuse) or to write it to (store)
     AssemblyCache *cache = nullptr;
     bool           reuse = false;
@@ -170,6 +172,8 @@ namespace ausroll::mechanics
     // stress P = kappa P(F_bar), the material's stress P(F_bar) and its tangent A
     Tensor<2, 3> P, P_bar;
     Tensor<4, 3> A;
+    // the cell's material points when the assembly has no point table
+    std::vector<material::MaterialPoint *> points;
   };
 
   template <int dim>
@@ -469,8 +473,18 @@ namespace ausroll::mechanics
     fe_values.reinit(cell);
     fe_values[displacement].get_function_gradients(*setup.solution, scratch.grad_u);
     fe_values[displacement].get_function_values(*setup.solution, scratch.u_values);
-    const std::vector<std::shared_ptr<material::MaterialPoint>> points
-        = setup.material_points->get_data(cell);
+    material::MaterialPoint *const *points;
+    if (setup.point_table != nullptr)
+      points = setup.point_table + cell->active_cell_index() * setup.n_q;
+    else
+    {
+      const std::vector<std::shared_ptr<material::MaterialPoint>> shared
+          = setup.material_points->get_data(cell);
+      scratch.points.resize(shared.size());
+      for (unsigned int q = 0; q < shared.size(); ++q)
+        scratch.points[q] = shared[q].get();
+      points = scratch.points.data();
+    }
 
     copy.cell_matrix = 0.;
     copy.cell_residual = 0.;
@@ -862,6 +876,27 @@ namespace ausroll::mechanics
     setup.targets = &targets;
     setup.need_matrix = targets.matrix != nullptr;
     prepare_cache(dof_handler, solution, time, cache, setup);
+    if (cache != nullptr)
+    {
+      // the owner changes `state` whenever the material points may have been replaced
+      const std::size_t n_cells = dof_handler.get_triangulation().n_active_cells();
+      if (!cache->points_valid || cache->points_state != cache->state
+          || cache->points.size() != n_cells * setup.n_q)
+      {
+        cache->points.assign(n_cells * setup.n_q, nullptr);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+          {
+            const auto shared = material_points.get_data(cell);
+            AssertDimension(shared.size(), setup.n_q);
+            for (unsigned int q = 0; q < setup.n_q; ++q)
+              cache->points[cell->active_cell_index() * setup.n_q + q] = shared[q].get();
+          }
+        cache->points_state = cache->state;
+        cache->points_valid = true;
+      }
+      setup.point_table = cache->points.data();
+    }
 
     // The cell loop on the threads of DEAL_II_NUM_THREADS (step-44): the worker fills one cell's
     // CopyData, the copier adds it to the targets in cell order.

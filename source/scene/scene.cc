@@ -190,7 +190,7 @@ namespace ausroll::scene
   void Scene<dim>::commit_step(const bool new_step)
   {
     system.commit_step(new_step);
-    contact.commit();
+    contact.commit(new_step);
     equilibrium->commit();
   }
 

@@ -35,6 +35,9 @@ namespace ausroll::solver
     // A step that fails with the predictor is first tried again from the converged state (the
     // extrapolation overshoots where the path turns: a fold-over corner, a node reaching a die).
     bool predict = loading.predictor == Predictor::linear_extrapolation && last_step_size > 0.;
+    // Before the first cutback, the step is tried once more with the nodes that closed in stick
+    // in the last step slipping (contact::NestedActiveSet::release_after_failure()).
+    bool released = false;
     for (;;)
     {
       const double time = t_start + dt;
@@ -42,18 +45,25 @@ namespace ausroll::solver
       step.result = problem.solve(time, predict ? dt / last_step_size : 0.);
       const NewtonResult &result = step.result;
 
-      if (!result.converged && predict)
-      {
-        predict = false;
-        problem.restart_step();
-        log << "  step " << number << " (t = " << time << "): " << result.reason
-            << "; trying again without the predictor" << std::endl;
-        continue;
-      }
       if (!result.converged)
       {
-        ++step.cutbacks;
         problem.restart_step();
+        const unsigned int n_released = released ? 0 : problem.release_after_failure();
+        released = true;
+        if (predict || n_released > 0)
+        {
+          log << "  step " << number << " (t = " << time << "): " << result.reason
+              << "; trying again";
+          if (predict)
+            log << " without the predictor";
+          if (n_released > 0)
+            log << (predict ? " and" : "") << " with " << n_released
+                << " freshly closed node(s) slipping";
+          log << std::endl;
+          predict = false;
+          continue;
+        }
+        ++step.cutbacks;
         log << "  step " << number << " (t = " << time << "): " << result.reason;
         if (step.cutbacks > loading.max_cutbacks)
         {

@@ -69,8 +69,18 @@ namespace
       solves.push_back({step, time - t_start, ratio, r.converged});
       return r;
     }
-    void                  restart_step() override { ++restarts; }
-    contact::StepDecision end_of_step(const double dt) override
+    void         restart_step() override { ++restarts; }
+    unsigned int release_after_failure() override
+    {
+      releases.push_back(accepted.size() + 1);
+      released_now = release(accepted.size() + 1);
+      return released_now;
+    }
+    /** Contact statuses release_after_failure() changes at step (number); default none. */
+    std::function<unsigned int(unsigned int)> release = [](unsigned int) { return 0u; };
+    std::vector<unsigned int>                 releases; ///< step numbers of the calls
+    unsigned int                              released_now = 0;
+    contact::StepDecision                     end_of_step(const double dt) override
     {
       return decide(accepted.size() + 1, dt);
     }
@@ -174,6 +184,36 @@ TEST(LoadStepper, RetryWithoutPredictorBeforeCuttingBack)
   EXPECT_EQ(p.restarts, 1u);
   EXPECT_NE(logs.text.str().find("  step 2 (t = 0.5): residual diverged; trying again without "
                                  "the predictor"),
+            std::string::npos)
+      << logs.text.str();
+}
+
+// Release after a failure: without the predictor, step 2 fails until the problem has released
+// contact statuses (2 nodes at the first failure): solved again at the same dt, no cutback, one
+// restart; the release is asked for once per step (step 3 fails at 0.25 with nothing to release
+// and is cut back once).
+TEST(LoadStepper, ReleaseAfterFailureBeforeCuttingBack)
+{
+  Logs        logs;
+  LoadStepper stepper(loading(), "out", logs.log, logs.detail_log);
+  MockProblem p;
+  p.release = [](unsigned int step) { return step == 2 ? 2u : 0u; };
+  p.converges = [&p](unsigned int step, double dt, double)
+  { return step == 2 ? p.released_now > 0 : (step != 3 || dt < 0.25); };
+  stepper.run(p, 0., 0.25, 0);
+
+  ASSERT_GE(p.solves.size(), 5u);
+  EXPECT_FALSE(p.solves[1].converged); // step 2, then again at the same size
+  EXPECT_EQ(p.solves[2].dt, 0.25);
+  EXPECT_TRUE(p.solves[2].converged);
+  EXPECT_FALSE(p.solves[3].converged); // step 3 at 0.25, then at 0.125
+  EXPECT_EQ(p.solves[4].dt, 0.125);
+  EXPECT_EQ(p.accepted[1].cutbacks, 0u);
+  EXPECT_EQ(p.accepted[2].cutbacks, 1u); // step 3: nothing to release, halved
+  EXPECT_EQ(p.releases, (std::vector<unsigned int>{2, 3}));
+  EXPECT_EQ(p.restarts, 2u);
+  EXPECT_NE(logs.text.str().find("  step 2 (t = 0.5): residual diverged; trying again with 2 "
+                                 "freshly closed node(s) slipping"),
             std::string::npos)
       << logs.text.str();
 }

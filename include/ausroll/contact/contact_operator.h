@@ -132,8 +132,10 @@ namespace ausroll::contact
     /** Store the nodal forces R = r(node) from the residual @p residual (ghosted). */
     void compute_reactions(const dealii::TrilinosWrappers::MPI::Vector &residual);
 
-    /** Accept the current statuses and geometry as the state at the end of a converged step. */
-    void commit();
+    /** Accept the current statuses and geometry as the state at the end of a converged step
+        (@p new_step false: a re-equilibration at the same time, which keeps the record of the
+        nodes that closed in the last step). */
+    void commit(const bool new_step = true);
 
     /** Number of dies (`Contact/Number of dies`). */
     unsigned int n_dies() const { return dies.size(); }
@@ -238,6 +240,10 @@ namespace ausroll::contact
 
     /** Return to the committed statuses (step cut back). */
     void reset() override;
+
+    /** Nodes that closed in the last converged step and stick (with a tangential reaction)
+        slip from the start of the step instead. Returns their number (global). */
+    unsigned int release_fresh_sticks() override;
     //@}
 
   private:
@@ -294,6 +300,8 @@ namespace ausroll::contact
       std::array<double, dim - 1> next_direction{};
       bool                        direction_pending = false;
       bool fresh = false; ///< status changed at the current iterate (reaction not yet meaningful)
+      /** The committed status is closed, the one before the last commit was open. */
+      bool closed_in_last_step = false;
     };
 
     /** A status change of a node: at which fraction of the step, to which status. */

@@ -87,6 +87,14 @@ namespace ausroll::contact
 
     /** Return to the committed statuses (a step is solved again). */
     virtual void reset() = 0;
+
+    /**
+     * After a failed solve and reset(): let every node that closed in the last converged step
+     * and sticks at the start of this one slip instead (friction force of the sign of its
+     * committed tangential reaction, at the slip limit); returns the number of switched nodes.
+     * Default: none.
+     */
+    virtual unsigned int release_fresh_sticks() { return 0; }
   };
 
   /** What the scene does after a converged solve of a (sub-)step (StatusStrategy::end_of_step()).
@@ -152,6 +160,13 @@ namespace ausroll::contact
         committed statuses are restored. */
     virtual void restart_step();
 
+    /**
+     * A solve of the step failed and restart_step() has been called: change statuses for one
+     * more solve of the same step before it is cut back; returns the number of changes (0: cut
+     * back). Default: none.
+     */
+    virtual unsigned int release_after_failure();
+
   protected:
     ContactStatusSet &nodes; ///< the contact nodes
     double            time = 0.;
@@ -195,6 +210,9 @@ namespace ausroll::contact
     unsigned int update_at_convergence(const ContactStatusSet::Vector &u,
                                        dealii::ConditionalOStream     &log) override;
     bool         backtrack_with_small_constraint_gaps() const override;
+    /** Nodes that closed in the last step and stick slip instead
+        (ContactStatusSet::release_fresh_sticks()). */
+    unsigned int release_after_failure() override;
   };
 
   /**

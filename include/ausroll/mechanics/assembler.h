@@ -71,6 +71,12 @@ namespace ausroll::mechanics
     std::vector<double> matrices, residuals;   ///< cell matrices and residuals by active cell index
     std::vector<double> min_jacobian;          ///< smallest det F of each cell
     unsigned long       hits = 0, misses = 0;  ///< statistics (reused / computed assemblies)
+    /** The material points by active cell index (quadrature points in order) as at @ref state
+        @ref points_state: built once per state instead of a CellDataStorage look-up (a map of
+        cell ids and a vector of shared pointers) per cell and assembly. */
+    std::vector<material::MaterialPoint *> points;
+    std::uint64_t                          points_state = 0;
+    bool                                   points_valid = false;
   };
 
   /** Outcome of an assembly, identical on all MPI ranks. */

@@ -68,7 +68,11 @@ namespace ausroll::scene
       system.start_step(predictor_ratio);
       return newton.solve(*equilibrium, newton_log);
     }
-    void                  restart_step() override { contact_strategy->restart_step(); }
+    void         restart_step() override { contact_strategy->restart_step(); }
+    unsigned int release_after_failure() override
+    {
+      return contact_strategy->release_after_failure();
+    }
     contact::StepDecision end_of_step(const double dt) override;
     std::string           keep_last_converged(const double t_start) override;
     unsigned int          accept_step(const solver::LoadStep &step) override;

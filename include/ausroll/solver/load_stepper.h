@@ -35,7 +35,8 @@ namespace ausroll::solver
    * What the load stepper drives (the scene implements it). A load step, as LoadStepper calls it:
    *   begin_step(t_start)
    *   repeat:  solve(t, ratio)         from the committed state (ratio != 0: with the predictor)
-   *            failed:    restart_step(), then again without the predictor or with half the step
+   *            failed:    restart_step(), then again without the predictor (and, once, with
+   *                       release_after_failure()) or with half the step
    *            converged: end_of_step(dt): accept, or solve again with dt * step_factor
    *   accept_step(step)                commit, history, output, ...
    * After too many cutbacks: keep_last_converged(t_start), then RunFailure.
@@ -57,6 +58,13 @@ namespace ausroll::solver
     /** The solve failed: the step will be solved again from the committed state. */
     virtual void restart_step() = 0;
 
+    /**
+     * After a failed solve and restart_step(): change the contact statuses for one more solve of
+     * the same step (contact::StatusStrategy::release_after_failure()); returns the number of
+     * changes (0: nothing to try). Default: none.
+     */
+    virtual unsigned int release_after_failure() { return 0; }
+
     /** After a converged solve of a step of size @p dt: the contact strategy's decision. */
     virtual contact::StepDecision end_of_step(const double dt) = 0;
 
@@ -75,12 +83,13 @@ namespace ausroll::solver
    * The load steps from a start time to `Loading/End time`. Steps end on the grid of nominal
    * steps (End time / Number of steps), also after cutbacks and shortened sub-steps, so that the
    * outputs of different runs share their times. A failed solve is first tried again without
-   * the predictor (if it was used), then with half the step, at most `Maximum cutbacks` times;
-   * then RunFailure names the step, its time, the reason and where the last converged state is.
-   * The next step size: `Step control = halving` keeps the size that worked after a cutback and
-   * grows by `Step growth factor` (to at most the nominal step) otherwise; `adaptive` scales it by
-   * LoadingParameters::step_factor() of the Newton iterations and contact status changes (at most
-   * 1 after a cutback).
+   * the predictor (if it was used) and, once per step, with the contact statuses of
+   * SteppedProblem::release_after_failure() (if it changed any), then with half the step, at most
+   * `Maximum cutbacks` times; then RunFailure names the step, its time, the reason and where the
+   * last converged state is. The next step size: `Step control = halving` keeps the size that
+   * worked after a cutback and grows by `Step growth factor` (to at most the nominal step)
+   * otherwise; `adaptive` scales it by LoadingParameters::step_factor() of the Newton iterations
+   * and contact status changes (at most 1 after a cutback).
    */
   class LoadStepper
   {
