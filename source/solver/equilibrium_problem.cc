@@ -1,5 +1,12 @@
 #include <ausroll/solver/equilibrium_problem.h>
 
+#include <deal.II/dofs/dof_tools.h>
+
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <vector>
+
 namespace ausroll::solver
 {
   using namespace dealii;
@@ -94,6 +101,74 @@ namespace ausroll::solver
         = linear_solver.solve(system.system_matrix, system.increment, system.rhs);
     system.newton_constraints.distribute(system.increment);
     return info;
+  }
+
+  template <int dim>
+  void EquilibriumProblem<dim>::check_tangent(ConditionalOStream &log)
+  {
+    // which quadrature points are plastic (their equivalent plastic strain grows in this step)
+    const auto plastic_flags = [this]()
+    {
+      std::vector<char> flags;
+      for (const auto &cell : system.triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &point : system.material_points.get_data(cell))
+            flags.push_back(point->trial.equivalent_plastic_strain
+                            > point->committed.equivalent_plastic_strain);
+      return flags;
+    };
+    const std::vector<char> plastic_at_u = plastic_flags();
+    using Vector = typename mechanics::MechanicalSystem<dim>::Vector;
+    const Vector r0 = system.free_residual;
+    const double norm0 = r0.l2_norm();
+    std::string  message;
+    log << "    tangent check: |r(u)| = " << std::scientific << std::setprecision(3) << norm0
+        << ", e(eps) =";
+    Vector                                        difference = r0;
+    std::map<types::global_dof_index, Point<dim>> support_points;
+    for (const double eps : {1e-2, 1e-3, 1e-4, 1e-5, 1e-6})
+    {
+      system.apply_increment(eps);
+      if (!assemble(false, message))
+      {
+        log << " (inadmissible at " << eps << ")";
+        continue;
+      }
+      difference = system.free_residual;
+      difference.add(-(1. - eps), r0);
+      log << " " << std::setprecision(2) << difference.l2_norm() / (eps * norm0);
+      if (eps == 1e-4 && difference.size() > 0)
+      {
+        // where the largest difference sits
+        types::global_dof_index worst = 0;
+        double                  largest = -1.;
+        for (const auto i : system.owned_dofs)
+          if (std::abs(difference[i]) > largest)
+          {
+            largest = std::abs(difference[i]);
+            worst = i;
+          }
+        DoFTools::map_dofs_to_support_points(system.mapping, system.dof_handler, support_points);
+        if (support_points.count(worst) > 0)
+          log << " [max at dof " << worst << " (" << support_points[worst] << "), "
+              << largest / (eps * norm0) << "]";
+      }
+    }
+    system.apply_increment(1.);
+    const bool              full_ok = assemble(false, message);
+    const std::vector<char> plastic_at_full = plastic_flags();
+    unsigned int            n_u = 0, n_full = 0, switched = 0;
+    for (unsigned int q = 0; q < plastic_at_u.size(); ++q)
+    {
+      n_u += plastic_at_u[q];
+      n_full += plastic_at_full[q];
+      switched += plastic_at_u[q] != plastic_at_full[q];
+    }
+    log << "; |r(u + d)| / |r(u)| = " << (full_ok ? system.free_residual.l2_norm() / norm0 : -1.)
+        << "; plastic points " << n_u << " -> " << n_full << ", " << switched << " switch"
+        << std::defaultfloat << std::endl;
+    system.apply_increment(0.);
+    assemble(true, message);
   }
 
   template class EquilibriumProblem<2>;
