@@ -40,12 +40,19 @@ namespace ausroll::solver
   bool EquilibriumProblem<dim>::assemble(const bool with_matrix, std::string &message)
   {
     TimerOutput::Scope scope(timer, "assembly");
-    strategy.begin_iterate(time);
+    // check_tangent() evaluates with the statuses of the iterate: the strategy is not asked
+    if (!fixed_statuses)
+      strategy.begin_iterate(time);
+    else if (contact.active())
+      contact.set_time(time);
     // Statuses that the strategy changes at this iterate (judged by the reactions of this very
     // assembly) require the constraints to be rebuilt and the system re-assembled.
     for (;;)
     {
-      strategy.update_geometry(system.solution_ghosted);
+      if (!fixed_statuses)
+        strategy.update_geometry(system.solution_ghosted);
+      else if (contact.active())
+        contact.update_geometry(system.solution_ghosted, false);
       last_constraint_violation = system.build_newton_constraints(
           boundary_conditions,
           time,
@@ -72,6 +79,8 @@ namespace ausroll::solver
         break;
       system.residual_ghosted = system.residual;
       contact.compute_reactions(system.residual_ghosted);
+      if (fixed_statuses)
+        break;
       const unsigned int changes = strategy.update_at_iterate();
       if (changes == 0)
         break;
@@ -120,6 +129,9 @@ namespace ausroll::solver
       return flags;
     };
     const std::vector<char> plastic_at_u = plastic_flags();
+    // the statuses of the iterate stay (the tangent is that of fixed statuses; a strategy that
+    // judged them at u + eps d would also change the Newton path)
+    fixed_statuses = true;
     using Vector = typename mechanics::MechanicalSystem<dim>::Vector;
     const Vector r0 = system.free_residual;
     const double norm0 = r0.l2_norm();
@@ -169,6 +181,7 @@ namespace ausroll::solver
         << std::defaultfloat << std::endl;
     system.apply_increment(0.);
     assemble(true, message);
+    fixed_statuses = false;
   }
 
   template class EquilibriumProblem<2>;
