@@ -1,4 +1,13 @@
 #include <ausroll/solver/equilibrium_problem.h>
+#include <ausroll/solver/tangent_check.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <cmath>
+#include <functional>
+#include <iomanip>
+#include <map>
+#include <vector>
 
 namespace ausroll::solver
 {
@@ -31,12 +40,19 @@ namespace ausroll::solver
   bool EquilibriumProblem<dim>::assemble(const bool with_matrix, std::string &message)
   {
     TimerOutput::Scope scope(timer, "assembly");
-    strategy.begin_iterate(time);
+    // check_tangent() evaluates with the statuses of the iterate: the strategy is not asked
+    if (!fixed_statuses)
+      strategy.begin_iterate(time);
+    else if (contact.active())
+      contact.set_time(time);
     // Statuses that the strategy changes at this iterate (judged by the reactions of this very
     // assembly) require the constraints to be rebuilt and the system re-assembled.
     for (;;)
     {
-      strategy.update_geometry(system.solution_ghosted);
+      if (!fixed_statuses)
+        strategy.update_geometry(system.solution_ghosted);
+      else if (contact.active())
+        contact.update_geometry(system.solution_ghosted, false);
       last_constraint_violation = system.build_newton_constraints(
           boundary_conditions,
           time,
@@ -63,6 +79,8 @@ namespace ausroll::solver
         break;
       system.residual_ghosted = system.residual;
       contact.compute_reactions(system.residual_ghosted);
+      if (fixed_statuses)
+        break;
       const unsigned int changes = strategy.update_at_iterate();
       if (changes == 0)
         break;
@@ -94,6 +112,76 @@ namespace ausroll::solver
         = linear_solver.solve(system.system_matrix, system.increment, system.rhs);
     system.newton_constraints.distribute(system.increment);
     return info;
+  }
+
+  template <int dim>
+  void EquilibriumProblem<dim>::check_tangent(ConditionalOStream &log)
+  {
+    // which quadrature points are plastic (their equivalent plastic strain grows in this step)
+    const auto plastic_flags = [this]()
+    {
+      std::vector<char> flags;
+      for (const auto &cell : system.triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &point : system.material_points.get_data(cell))
+            flags.push_back(point->trial.equivalent_plastic_strain
+                            > point->committed.equivalent_plastic_strain);
+      return flags;
+    };
+    const std::vector<char> plastic_at_u = plastic_flags();
+    // the statuses of the iterate stay (the tangent is that of fixed statuses; a strategy that
+    // judged them at u + eps d would also change the Newton path)
+    fixed_statuses = true;
+    using Vector = typename mechanics::MechanicalSystem<dim>::Vector;
+    const Vector r0 = system.free_residual;
+    const double norm0 = r0.l2_norm();
+    std::string  message;
+    log << "    tangent check: |r(u)| = " << std::scientific << std::setprecision(3) << norm0
+        << ", e(eps) =";
+    bool                                admissible = true;
+    const std::function<Vector(double)> residual_at = [&](const double eps)
+    {
+      system.apply_increment(eps);
+      admissible = assemble(false, message) && admissible;
+      return system.free_residual;
+    };
+    const std::vector<double> epsilons{1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
+    for (const double e : linear_model_errors(residual_at, r0, epsilons))
+      log << " " << std::setprecision(2) << e;
+    if (!admissible)
+      log << " (an inadmissible state on the way)";
+    // where the largest difference sits (at eps = 1e-4)
+    Vector difference = residual_at(1e-4);
+    difference.add(-(1. - 1e-4), r0);
+    types::global_dof_index worst = 0;
+    double                  largest = -1.;
+    for (const auto i : system.owned_dofs)
+      if (std::abs(difference[i]) > largest)
+      {
+        largest = std::abs(difference[i]);
+        worst = i;
+      }
+    std::map<types::global_dof_index, Point<dim>> support_points;
+    DoFTools::map_dofs_to_support_points(system.mapping, system.dof_handler, support_points);
+    if (support_points.count(worst) > 0)
+      log << " [largest at dof " << worst << " (" << support_points[worst]
+          << "): " << largest / (1e-4 * norm0) << "]";
+    system.apply_increment(1.);
+    const bool              full_ok = assemble(false, message);
+    const std::vector<char> plastic_at_full = plastic_flags();
+    unsigned int            n_u = 0, n_full = 0, switched = 0;
+    for (unsigned int q = 0; q < plastic_at_u.size(); ++q)
+    {
+      n_u += plastic_at_u[q];
+      n_full += plastic_at_full[q];
+      switched += plastic_at_u[q] != plastic_at_full[q];
+    }
+    log << "; |r(u + d)| / |r(u)| = " << (full_ok ? system.free_residual.l2_norm() / norm0 : -1.)
+        << "; plastic points " << n_u << " -> " << n_full << ", " << switched << " switch"
+        << std::defaultfloat << std::endl;
+    system.apply_increment(0.);
+    assemble(true, message);
+    fixed_statuses = false;
   }
 
   template class EquilibriumProblem<2>;

@@ -2,6 +2,7 @@
 #include <ausroll/solver/newton_solver.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -18,6 +19,8 @@ namespace ausroll::solver
     NewtonResult result;
     std::string  message;
     const double constraint_tolerance = 1e-10 * problem.length_scale();
+    // debug tool (doc/scenes/hard_cases.md section 9): finite-difference check of the tangent
+    static const bool tangent_check = std::getenv("AUSROLL_TANGENT_CHECK") != nullptr;
 
     if (!problem.assemble(true, message))
     {
@@ -147,6 +150,8 @@ namespace ausroll::solver
           << std::setprecision(3) << info.seconds << " s wall, " << info.cpu_seconds << " s CPU"
           << std::defaultfloat << std::endl;
       ++result.iterations;
+      if (tangent_check)
+        problem.check_tangent(log);
       // directional derivative of the energy along the increment at the start of the step
       const double slope = problem.increment_residual_product();
 

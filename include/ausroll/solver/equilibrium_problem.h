@@ -73,6 +73,17 @@ namespace ausroll::solver
       return strategy.backtrack_with_small_constraint_gaps();
     }
 
+    /**
+     * Finite-difference check of the tangent along the last increment d: for eps = 1e-2 ... 1e-6
+     * prints e(eps) = |r(u + eps d) - (1 - eps) r(u)| / (eps |r(u)|) over the free equations
+     * (falls like eps for a consistent tangent, stays for an inconsistent one), where the largest
+     * difference sits, and how many quadrature points are plastic at u and at u + d and switch
+     * between them. The contact statuses of u are kept for all these evaluations (the strategy is
+     * not asked), so the Newton path is that without the check. Leaves the iterate and its
+     * assembly as at u (re-assembled).
+     */
+    void check_tangent(dealii::ConditionalOStream &log) override;
+
     /** The last assembly was of a converged state: its force level counts for the run's. */
     void commit()
     {
@@ -99,5 +110,8 @@ namespace ausroll::solver
     double last_residual_norm = 0.;
     double last_reference_force = 0.;
     double last_constraint_violation = 0.;
+    /** check_tangent() at work: assemble with the contact statuses of the iterate (projections
+        updated, no closing, no judging by the strategy). */
+    bool fixed_statuses = false;
   };
 } // namespace ausroll::solver

@@ -76,6 +76,14 @@ namespace ausroll::solver
      * constraints are met.
      */
     virtual bool backtrack_with_small_constraint_gaps() const { return false; }
+
+    /**
+     * Debug check of the tangent along the last increment d (environment variable
+     * `AUSROLL_TANGENT_CHECK` set: called after every solve_for_increment()). A problem that can
+     * prints how far its residual r(u + eps d) is from the linear model (1 - eps) r(u) and leaves
+     * the iterate u and its assembly as they were. The default prints nothing.
+     */
+    virtual void check_tangent(dealii::ConditionalOStream &log) { (void)log; }
   };
 
   /** Outcome of one Newton solve. */
