@@ -16,6 +16,7 @@ import math
 import os
 import resource
 import subprocess
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -29,13 +30,8 @@ TIMELINE = [
 ]
 
 
-def history(path):
-    return {round(float(r["time"]), 6): r for r in csv.DictReader(open(path))}
-
-
-def radial(r, a):
-    t = math.radians(a)
-    return float(r[f"mid{a}_ux"]) * math.cos(t) + float(r[f"mid{a}_uy"]) * math.sin(t)
+sys.path.insert(0, HERE)
+from study import history, radial  # noqa: E402  (the readers of the 3D study)
 
 
 def main():
