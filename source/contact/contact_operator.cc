@@ -5,6 +5,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <algorithm>
 #include <cmath>
@@ -204,14 +206,63 @@ namespace ausroll::contact
             && n.projection.gap < (n.changes == 0 ? gap_tolerance : -gap_tolerance))
           switch_status(n, closing_status(n));
       }
+      // 3D: the direction follows the slip at every iterate, with its derivative in the tangent
+      // (add_slip_direction_tangent()); nested active set: from its first turn at a converged
+      // state on (update_statuses()), held before
+      n.turned = false;
+      n.followed_slip = 0.;
       if constexpr (dim == 3)
         if (n.current.status == ContactStatus::slip)
-          update_slip_direction(n, !hold_changed);
+        {
+          n.turned = update_slip_direction(n, !hold_changed || n.follow) > direction_tolerance;
+        }
       if (n.current.status != ContactStatus::open)
         ++closed;
     }
     build_row_transforms();
     return closed;
+  }
+
+  template <int dim>
+  unsigned int
+  ContactOperator<dim>::add_slip_direction_tangent(const AffineConstraints<double> &constraints,
+                                                   TrilinosWrappers::SparseMatrix  &matrix,
+                                                   TrilinosWrappers::MPI::Vector   &rhs) const
+  {
+    unsigned int n_terms = 0;
+    if constexpr (dim == 3)
+    {
+      FullMatrix<double>                   block(dim, dim);
+      dealii::Vector<double>               zero(dim);
+      std::vector<types::global_dof_index> dofs(dim);
+      for (const Node &n : nodes)
+      {
+        if (!n.owned || n.current.status != ContactStatus::slip || n.followed_slip <= 0.
+            || !dies[n.current.die]->friction->switches_stick_slip())
+          continue;
+        // d(T d)/dx = T (P - d (x) d) / |s|, T the slip limit at this assembly's normal force
+        const double T
+            = dies[n.current.die]->friction->slip_limit(n.current.Rn, n.area).value(n.current.Rn);
+        const Tensor<1, dim>  d = slip_vector(n);
+        const Tensor<1, dim> &normal = n.projection.normal;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            block(i, j)
+                = T / n.followed_slip * ((i == j ? 1. : 0.) - normal[i] * normal[j] - d[i] * d[j]);
+        for (unsigned int c = 0; c < dim; ++c)
+          dofs[c] = n.dofs[c];
+        zero = 0.;
+        constraints.distribute_local_to_global(block, zero, dofs, matrix, rhs, true);
+        ++n_terms;
+      }
+    }
+    else
+    {
+      (void)constraints;
+    }
+    matrix.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::add);
+    return Utilities::MPI::sum(n_terms, comm);
   }
 
   template <int dim>
@@ -267,6 +318,7 @@ namespace ausroll::contact
     if (status == ContactStatus::open)
       n.current.direction = {};
     n.direction_pending = false;
+    n.follow = false;
     n.current.status = status;
   }
 
@@ -284,7 +336,7 @@ namespace ausroll::contact
   }
 
   template <int dim>
-  bool ContactOperator<dim>::update_slip_direction(Node &n, const bool follow_slip) const
+  double ContactOperator<dim>::update_slip_direction(Node &n, const bool follow_slip) const
   {
     // The friction force opposes the slip of the node over the step so far (backward Euler in
     // the direction: d = slip / |slip|) once that slip is well defined, i.e. larger than
@@ -296,18 +348,19 @@ namespace ausroll::contact
       n.direction_pending = false;
     }
     if (!follow_slip)
-      return false;
+      return 0.;
     const std::array<double, dim - 1> slip = slip_increment(n);
     const double                      size = magnitude(slip);
     if (size <= slip_length)
-      return false;
+      return 0.;
+    n.followed_slip = size;
     double change = 0.;
     for (unsigned int a = 0; a < dim - 1; ++a)
     {
       change = std::max(change, std::abs(slip[a] / size - n.current.direction[a]));
       n.current.direction[a] = slip[a] / size;
     }
-    return change > direction_tolerance;
+    return change;
   }
 
   template <int dim>
@@ -532,18 +585,25 @@ namespace ausroll::contact
       }
       else if constexpr (dim == 3)
       {
-        // Nested active set: the slip direction is held during a Newton pass (the friction force
-        // -T d is then a consistent, fixed-direction load, as the slip sign in 2D) and follows
-        // the slip here, at the converged state; a turn of the direction is a change like a
-        // status change (one more pass, counted against `Maximum status changes`). Updated at
-        // every iterate instead, d = slip / |slip| is a fixed-point iteration without its
-        // derivative: where the slip is small the direction flips from one iterate to the next
-        // and Newton stalls.
+        // Nested active set: the slip direction of a node is held during its first Newton pass
+        // of the step (the friction force -T d a fixed-direction load, as the slip sign in 2D)
+        // and follows the slip here, at the converged state; a turn is a change like a status
+        // change (one more pass, counted against `Maximum status changes`), and from then on the
+        // direction follows the slip at every iterate with its derivative in the tangent
+        // (add_slip_direction_tangent(): Newton converges quadratically in the direction too),
+        // so a node turns here at most once per step and the converged state has d = s / |s|
+        // exactly (n.turned: a turn between the last assembly and this state). Held direction
+        // in every pass (the rule before): the direction converged as a fixed point over 4-8
+        // passes per step on the flat die's side-face edge. Following from the first iterate:
+        // the slip of the first iterates of a large step is far from the converged one and the
+        // direction flips (line searches, a cutback on the flat die's first rolling step).
         if (hold_changed && n.current.status == ContactStatus::slip
-            && friction.switches_stick_slip() && update_slip_direction(n, true))
+            && friction.switches_stick_slip()
+            && (n.follow ? n.turned : update_slip_direction(n, true) > direction_tolerance))
         {
           ++n.changes;
           n.fresh = true;
+          n.follow = true;
           if (n.owned)
             ++changes;
         }
@@ -680,6 +740,7 @@ namespace ausroll::contact
         n.committed.Rt = {};
       }
       n.changes = 0;
+      n.follow = false;
       if (n.current.status == ContactStatus::slip)
       {
         n.current.s = n.projection.s;
@@ -730,6 +791,7 @@ namespace ausroll::contact
     {
       n.current = n.committed;
       n.changes = 0;
+      n.follow = false;
     }
     build_row_transforms();
   }

@@ -87,6 +87,12 @@ namespace ausroll::solver
       detail_log << "      contact: " << changes << " status change" << (changes > 1 ? "s" : "")
                  << ", re-assembling" << std::endl;
     }
+    // 3D: the derivative of the slip direction of the slipping nodes (at this assembly's normal
+    // forces)
+    if constexpr (dim == 3)
+      if (with_matrix && contact.active())
+        contact.add_slip_direction_tangent(
+            system.newton_constraints, system.system_matrix, system.rhs);
     // The curvature tangent is planar (2D only; Scene<3> leaves curvature_tangent null).
     if constexpr (dim == 2)
       if (with_matrix && contact.active() && curvature_tangent != nullptr)

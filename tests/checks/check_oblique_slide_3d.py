@@ -9,7 +9,10 @@ Asserts:
     vector mu F_n e_s (e_s the die's sliding direction, i.e. -mu F_n along the block's slip
     direction relative to the die): |F_t - mu F_n e_s| / (mu F_n) <= 1e-9 (the exact Coulomb
     cone; the history's 10 digits allow ~1e-10), and the top reaction balances the die force
-    (1e-9);
+    (1e-8: the out-of-balance force of the free equations is below the Newton tolerance, 1e-9 of
+    the force level, in the l2 norm; its sum over the nodes can be up to sqrt(n) times that:
+    measured 1.1e-9 since the slip direction is linearised consistently and Newton stops at its
+    tolerance, 0 to the history's digits when extra direction passes drove it to round-off);
   * after the release (t = 7): no force, no sticking or slipping node.
 
 Usage: check_oblique_slide_3d.py HISTORY [--mu 0.3] [--angle 30]
@@ -69,8 +72,8 @@ def main():
     checks(f"full slip, {n_rows} steps in 5 <= t <= 6: max |F_t - mu F_n e_s| / mu F_n = "
            f"{worst_slip:.2e} (<= 1e-9), no sticking node ({worst_stick})",
            n_rows >= 4 and worst_slip <= 1e-9 and worst_stick == 0)
-    checks(f"full slip: max |F_die + R_top| / |F_die| = {worst_balance:.2e} (<= 1e-9)",
-           n_rows >= 4 and worst_balance <= 1e-9)
+    checks(f"full slip: max |F_die + R_top| / |F_die| = {worst_balance:.2e} (<= 1e-8)",
+           n_rows >= 4 and worst_balance <= 1e-8)
 
     r = at(7.0)
     f = force(r, f"{die}_force")

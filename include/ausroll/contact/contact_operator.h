@@ -14,6 +14,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <functional>
@@ -128,6 +129,22 @@ namespace ausroll::contact
 
     /** Friction row transforms of the slipping nodes (recomputed by update_geometry()). */
     const RowTransforms<dim> &row_transforms() const { return transforms; }
+
+    /**
+     * 3D: the derivative of the slip direction in the tangent (consistent linearisation of the
+     * isotropic cone). A slipping node whose slip s since its slip started is longer than
+     * slip_length has d = s / |s| at every iterate (update_geometry()), and its friction force
+     * -T(R_n) d, R_n the normal force of this assembly (compute_reactions() first), changes with
+     * the node's position x by -T (P - d (x) d) / |s| dx (P = I - n (x) n: the projection of the
+     * node on the die moves with the tangential part of dx). The rows of the node's equations
+     * (r + T d = 0) get + T / |s| (P - d (x) d) in the columns of its own DoFs, condensed with
+     * @p constraints (inhomogeneities into @p rhs, as the assembly does). Curvature terms of the
+     * tangents (|s| / R against 1) are left out. Returns the number of nodes (global). 2D: nothing
+     * (the slip sign does not depend on the iterate).
+     */
+    unsigned int add_slip_direction_tangent(const dealii::AffineConstraints<double> &constraints,
+                                            dealii::TrilinosWrappers::SparseMatrix  &matrix,
+                                            dealii::TrilinosWrappers::MPI::Vector   &rhs) const;
 
     /** Store the nodal forces R = r(node) from the residual @p residual (ghosted). */
     void compute_reactions(const dealii::TrilinosWrappers::MPI::Vector &residual);
@@ -302,6 +319,15 @@ namespace ausroll::contact
       bool fresh = false; ///< status changed at the current iterate (reaction not yet meaningful)
       /** The committed status is closed, the one before the last commit was open. */
       bool closed_in_last_step = false;
+      /** 3D: the slip direction turned by more than direction_tolerance at the last projection
+          (update_geometry()): at a converged state, the residual was not of this direction. */
+      bool turned = false;
+      /** 3D: |s| at the last projection if the direction follows the slip (> slip_length), else
+          0 (the direction is held and has no derivative). */
+      double followed_slip = 0.;
+      /** 3D, nested active set: the direction follows the slip at every iterate (with its
+          derivative) for the rest of the step, since it turned at a converged state. */
+      bool follow = false;
     };
 
     /** A status change of a node: at which fraction of the step, to which status. */
@@ -337,8 +363,8 @@ namespace ausroll::contact
 
     /** 3D: take a pending direction of the last step; with @p follow_slip, d = the direction of
         the slip of node @p n since its current slip started, if that slip is longer than
-        slip_length. Returns true if d turned by more than direction_tolerance. */
-    bool update_slip_direction(Node &n, const bool follow_slip) const;
+        slip_length. Returns the turn of d (largest change of a component). */
+    double update_slip_direction(Node &n, const bool follow_slip) const;
 
     /** The slip direction vector d = sum_a d_a t_a of node @p n (global). */
     dealii::Tensor<1, dim> slip_vector(const Node &n) const;
@@ -362,10 +388,11 @@ namespace ausroll::contact
     double                                      time = 0.;
     double                                      gap_tolerance = 1e-10;
     /** 3D: slips over a step longer than this (1e-2 of the length scale) set the slip direction
-        at every iterate; shorter ones keep it (update_slip_direction()). */
+        at every iterate (with its derivative in the tangent: add_slip_direction_tangent()); shorter
+        ones keep it (update_slip_direction()). */
     double slip_length = 1e-8;
     /** 3D, nested active set: a turn of the slip direction (largest change of a component of
-        the unit vector) beyond this at a converged state is one more pass. */
+        the unit vector) beyond this at a converged state is one more pass (update_statuses()). */
     double direction_tolerance = 1e-8;
     /** Slip against the slip direction beyond this is a reversal (the node sticks). */
     double reversal_tolerance = 1e-10;
