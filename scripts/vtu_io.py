@@ -26,7 +26,11 @@ def datasets(directory):
 
 def read_grid(path):
     """The vtkUnstructuredGrid of a .vtu (one piece) or .pvtu (all pieces merged) file."""
-    import vtk
+    try:
+        import vtk
+    except ImportError:
+        raise SystemExit("reading VTU files needs VTK's Python module: apt-get install python3-vtk9 "
+                         "(and run the script with /usr/bin/python3)")
 
     if not os.path.isfile(path):
         raise SystemExit(f"no such file: {path}")
