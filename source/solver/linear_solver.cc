@@ -79,6 +79,14 @@ namespace ausroll::solver
   }
 
   template <int dim>
+  void LinearSolver<dim>::set_pivot_reuse(const bool reuse) const
+  {
+    Teuchos::ParameterList list;
+    list.set("Refactorize", reuse);
+    direct_solver->SetParameters(list);
+  }
+
+  template <int dim>
   void LinearSolver<dim>::solve_direct(const TrilinosWrappers::SparseMatrix &A,
                                        TrilinosWrappers::MPI::Vector        &x,
                                        const TrilinosWrappers::MPI::Vector  &b,
@@ -99,15 +107,41 @@ namespace ausroll::solver
                   ExcMessage(package + ": symbolic factorisation failed"));
       factored_matrix = &matrix;
       factored_package = package;
+      reuse_pivots = package == "Amesos_Klu";
+      set_pivot_reuse(reuse_pivots);
     }
     try
     {
-      AssertThrow(direct_solver->NumericFactorization() == 0,
-                  ExcMessage(package + ": numeric factorisation failed"));
-      direct_problem->SetLHS(&x.trilinos_vector());
-      direct_problem->SetRHS(const_cast<Epetra_MultiVector *>(
-          static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
-      AssertThrow(direct_solver->Solve() == 0, ExcMessage(package + ": solve failed"));
+      const auto factor_and_solve = [&]()
+      {
+        AssertThrow(direct_solver->NumericFactorization() == 0,
+                    ExcMessage(package + ": numeric factorisation failed"));
+        direct_problem->SetLHS(&x.trilinos_vector());
+        direct_problem->SetRHS(const_cast<Epetra_MultiVector *>(
+            static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+        AssertThrow(direct_solver->Solve() == 0, ExcMessage(package + ": solve failed"));
+      };
+      factor_and_solve();
+      if (reuse_pivots)
+      {
+        // KLU refactorises with the pivot order of its last pivoting factorisation (Amesos
+        // "Refactorize"; it falls back to pivoting by itself only when the diagonal of U is
+        // nearly singular). The pivots of a status or tangent change may still be poor: check the
+        // residual (one product with A, cheap against the factorisation) and factorise with
+        // pivoting when it is not at round-off level. A relative linear residual of 1e-10 keeps
+        // Newton quadratic down to its tolerance; on the gear scene the kept pivots leave
+        // 4e-16 to 3e-13 (doc/benchmarks.md, "Direct solver: kept pivots").
+        TrilinosWrappers::MPI::Vector r(b);
+        A.vmult(r, x);
+        r -= b;
+        if (!(r.l2_norm() <= 1e-10 * b.l2_norm()))
+        {
+          set_pivot_reuse(false);
+          factor_and_solve();
+          set_pivot_reuse(true);
+          ++pivoting_refactorisations;
+        }
+      }
     }
     catch (...)
     {

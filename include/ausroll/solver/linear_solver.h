@@ -59,9 +59,15 @@ namespace ausroll::solver
      * reinit of the matrix, i.e. after every mesh change, while the old matrix still exists: the
      * kept solver refers to it): the direct solver's symbolic factorisation is redone at the next
      * solve. Between such calls the symbolic factorisation (ordering, elimination tree) is kept
-     * and only the numeric one is redone for new matrix values.
+     * and only the numeric one is redone for new matrix values; KLU then also keeps the pivot
+     * order of its last pivoting factorisation and pivots again only when the residual of the
+     * solve is not at round-off level (n_pivoting_refactorisations() counts those).
      */
     void matrix_pattern_changed();
+
+    /** Solves whose kept KLU pivot order was rejected by the residual check (since construction).
+     */
+    unsigned int n_pivoting_refactorisations() const { return pivoting_refactorisations; }
 
     /**
      * The solver family used for a system of @p n_dofs unknowns: `Type`, or for Type = automatic
@@ -81,7 +87,13 @@ namespace ausroll::solver
                       const dealii::TrilinosWrappers::MPI::Vector  &b,
                       const std::string                            &package) const;
 
+    /** Let KLU refactorise with its last pivot order (Amesos "Refactorize"). */
+    void set_pivot_reuse(bool reuse) const;
+
     LinearSolverParameters parameters;
+    /** The direct solver refactorises with kept pivots (KLU), checked by the residual. */
+    mutable bool         reuse_pivots = false;
+    mutable unsigned int pivoting_refactorisations = 0;
     /** Amesos problem and solver of the direct path, kept between solves with one pattern. */
     mutable std::unique_ptr<Epetra_LinearProblem> direct_problem;
     mutable std::unique_ptr<Amesos_BaseSolver>    direct_solver;
