@@ -142,6 +142,7 @@ namespace ausroll::mechanics
                     fe,
                     quadrature,
                     update_values | update_gradients | update_quadrature_points | update_JxW_values)
+        , local_u(fe.n_dofs_per_cell())
         , grad_u(quadrature.size())
         , u_values(quadrature.size())
         , g(fe.n_dofs_per_cell())
@@ -159,6 +160,7 @@ namespace ausroll::mechanics
     }
 
     FEValues<dim>               fe_values;
+    std::vector<double>         local_u;  // the cell's DoF values of the solution
     std::vector<Tensor<2, dim>> grad_u;   // Grad u at the quadrature points
     std::vector<Tensor<1, dim>> u_values; // u at the quadrature points
     // The 3D gradient G_i = dF/du_i of each shape function (3x3): row c_i holds the in-plane
@@ -310,8 +312,11 @@ namespace ausroll::mechanics
       // Q1: the deformation gradient at the cell centre
       FEValues<dim> &fe_center = scratch.fe_center;
       fe_center.reinit(cell);
-      fe_center[displacement].get_function_gradients(*setup.solution, scratch.grad_u_center);
-      fe_center[displacement].get_function_values(*setup.solution, scratch.u_center);
+      // (the cell's DoF values were read once by assemble_cell())
+      fe_center[displacement].get_function_gradients_from_local_dof_values(cell_scratch.local_u,
+                                                                           scratch.grad_u_center);
+      fe_center[displacement].get_function_values_from_local_dof_values(cell_scratch.local_u,
+                                                                        scratch.u_center);
       const Point<dim>  &X0 = fe_center.quadrature_point(0);
       const Tensor<2, 3> F0
           = kinematics.deformation_gradient(scratch.grad_u_center[0], scratch.u_center[0], X0);
@@ -471,8 +476,13 @@ namespace ausroll::mechanics
     Tensor<4, 3>  &A = scratch.A;
 
     fe_values.reinit(cell);
-    fe_values[displacement].get_function_gradients(*setup.solution, scratch.grad_u);
-    fe_values[displacement].get_function_values(*setup.solution, scratch.u_values);
+    // one read of the cell's DoF values from the Trilinos vector for all evaluations of the cell
+    // (FEValuesViews would read and allocate them for each call)
+    cell->get_dof_values(*setup.solution, scratch.local_u.begin(), scratch.local_u.end());
+    fe_values[displacement].get_function_gradients_from_local_dof_values(scratch.local_u,
+                                                                         scratch.grad_u);
+    fe_values[displacement].get_function_values_from_local_dof_values(scratch.local_u,
+                                                                      scratch.u_values);
     material::MaterialPoint *const *points;
     if (setup.point_table != nullptr)
       points = setup.point_table + cell->active_cell_index() * setup.n_q;
@@ -1004,8 +1014,11 @@ namespace ausroll::mechanics
     const FEValuesExtractors::Vector displacement(0);
     FEValues<dim>                   &fe_values = scratch.cell.fe_values;
     fe_values.reinit(cell);
-    fe_values[displacement].get_function_gradients(solution, scratch.cell.grad_u);
-    fe_values[displacement].get_function_values(solution, scratch.cell.u_values);
+    cell->get_dof_values(solution, scratch.cell.local_u.begin(), scratch.cell.local_u.end());
+    fe_values[displacement].get_function_gradients_from_local_dof_values(scratch.cell.local_u,
+                                                                         scratch.cell.grad_u);
+    fe_values[displacement].get_function_values_from_local_dof_values(scratch.cell.local_u,
+                                                                      scratch.cell.u_values);
     std::vector<Tensor<2, 3>> F(setup.n_q);
     for (unsigned int q = 0; q < setup.n_q; ++q)
       F[q] = kinematics.deformation_gradient(
