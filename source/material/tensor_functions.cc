@@ -16,26 +16,6 @@ namespace ausroll::material
     SymmetricTensor<2, 3> deviator = X;
     for (unsigned int i = 0; i < 3; ++i)
       deviator[i][i] -= s.shift;
-    if (deviator[0][2] == 0. && deviator[1][2] == 0.)
-    {
-      // Planar kinematics (plane strain, plane stress, axisymmetric) give exactly this block
-      // form: e_z is an eigenvector, and the x-y block has the closed-form solution
-      // lambda = m +- r, n_1 = (cos phi, sin phi), phi = atan2(2 c, a - b) / 2. It is as
-      // accurate as the iterative QL method (the eigenvalues of the deviator are computed
-      // without cancellation against the shift) and about ten times cheaper.
-      const double a = deviator[0][0], b = deviator[1][1], c = deviator[0][1];
-      const double m = 0.5 * (a + b);
-      const double r = std::hypot(0.5 * (a - b), c);
-      const double phi = 0.5 * std::atan2(c, 0.5 * (a - b));
-      const double cs = std::cos(phi), sn = std::sin(phi);
-      s.shifted_values = {{m + r, m - r, deviator[2][2]}};
-      s.vectors[0] = Tensor<1, 3>({cs, sn, 0.});
-      s.vectors[1] = Tensor<1, 3>({-sn, cs, 0.});
-      s.vectors[2] = Tensor<1, 3>({0., 0., 1.});
-      for (unsigned int k = 0; k < 3; ++k)
-        s.values[k] = s.shifted_values[k] + s.shift;
-      return s;
-    }
     const auto eigen = dealii::eigenvectors(
         deviator, dealii::SymmetricTensorEigenvectorMethod::ql_implicit_shifts);
     for (unsigned int a = 0; a < 3; ++a)

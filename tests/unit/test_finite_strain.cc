@@ -197,68 +197,6 @@ TEST(TensorFunctions, LogarithmAndExponentialDerivativesMatchFiniteDifferences)
   EXPECT_LT((dlog_I - dealii::identity_tensor<3>()).norm(), 1e-14);
 }
 
-// The closed-form spectral decomposition of the planar block form (X_xz = X_yz = 0, the form of
-// every 2D scene) against the iterative QL method of the general form: ln and exp of X and their
-// derivatives, with the general path reached through a rotation that fills the block
-// (ln(R X R^T) = R ln(X) R^T, d ln(R X R^T)[R dX R^T] = R (d ln(X)[dX]) R^T). Samples: a general
-// in-plane block, in-plane eigenvalues split by 0 ... 1e-5 (the divided differences of the
-// derivative), the z eigenvalue equal to an in-plane one, and X = I. Tolerance 1e-12 relative: both
-// are backward stable to round-off; the derivative at splits near 1e-8 loses a few digits to the
-// divided difference in both paths alike.
-TEST(TensorFunctions, PlanarBlockClosedFormMatchesGeneralDecomposition)
-{
-  std::vector<SymmetricTensor<2, 3>> samples;
-  const auto                         block = [](double a, double b, double c, double z)
-  {
-    SymmetricTensor<2, 3> X;
-    X[0][0] = a;
-    X[1][1] = b;
-    X[0][1] = c;
-    X[2][2] = z;
-    return X;
-  };
-  samples.push_back(block(1.3, 0.8, 0.25, 1.1));
-  samples.push_back(block(0.6, 1.7, -0.4, 0.9));
-  for (const double split : {0., 1e-12, 1e-8, 1e-5})
-    samples.push_back(block(1.2 + split, 1.2, 0., 0.95));
-  samples.push_back(block(1.0, 1.0, 1e-9, 1.3));
-  samples.push_back(block(1.4, 0.9, 0., 1.4)); // z eigenvalue equal to an in-plane one
-  samples.push_back(dealii::unit_symmetric_tensor<3>());
-
-  const Tensor<2, 3> R = rotation(0.7, vec(1., 0.4, -0.8));
-  double             max_value = 0., max_derivative = 0.;
-  for (const auto &X : samples)
-  {
-    SymmetricTensor<4, 3>       dlog, dexp, dlog_r, dexp_r;
-    const SymmetricTensor<2, 3> lnX = logarithm(X, &dlog), expX = exponential(X, &dexp);
-    const SymmetricTensor<2, 3> Xr = rotate(R, X);
-    ASSERT_NE(Xr[0][2], 0.); // the rotated tensor takes the general path
-    const SymmetricTensor<2, 3> lnXr = logarithm(Xr, &dlog_r), expXr = exponential(Xr, &dexp_r);
-    max_value = std::max({max_value,
-                          (rotate(R, lnX) - lnXr).norm() / std::max(1., lnXr.norm()),
-                          (rotate(R, expX) - expXr).norm() / expXr.norm()});
-    for (unsigned int k = 0; k < 3; ++k)
-      for (unsigned int l = k; l < 3; ++l)
-      {
-        SymmetricTensor<2, 3> dX;
-        dX[k][l] = 1.;
-        const SymmetricTensor<2, 3> dXr = rotate(R, dX);
-        max_derivative
-            = std::max({max_derivative,
-                        (rotate(R, SymmetricTensor<2, 3>(dlog * dX)) - dlog_r * dXr).norm()
-                            / (dlog_r * dXr).norm(),
-                        (rotate(R, SymmetricTensor<2, 3>(dexp * dX)) - dexp_r * dXr).norm()
-                            / (dexp_r * dXr).norm()});
-      }
-  }
-  std::printf(
-      "[ tensor functions ] planar block closed form vs QL: values %.2e, derivatives %.2e\n",
-      max_value,
-      max_derivative);
-  EXPECT_LT(max_value, 1e-12);
-  EXPECT_LT(max_derivative, 1e-12);
-}
-
 TEST(TensorFunctions, AddOuterProductEqualsDealIIOuterProduct)
 {
   SymmetricTensor<2, 3> A, B;

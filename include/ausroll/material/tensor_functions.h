@@ -21,16 +21,13 @@ namespace ausroll::material
    */
   struct SpectralDecomposition
   {
-    std::array<double, 3>               values;         ///< eigenvalues x_a (no fixed order)
+    std::array<double, 3>               values;         ///< eigenvalues x_a (descending)
     std::array<double, 3>               shifted_values; ///< x_a - shift
     double                              shift = 0.;     ///< tr X / 3
     std::array<dealii::Tensor<1, 3>, 3> vectors;        ///< unit eigenvectors n_a
   };
 
-  /**
-   * Spectral decomposition of @p X: closed form when X has the block form of planar kinematics
-   * (X_xz = X_yz = 0), deal.II's QL algorithm with implicit shifts otherwise.
-   */
+  /** Spectral decomposition of @p X (deal.II's QL algorithm with implicit shifts). */
   SpectralDecomposition spectral_decomposition(const dealii::SymmetricTensor<2, 3> &X);
 
   /** sum_a f_a n_a (x) n_a for the eigenvectors n_a of @p s (an isotropic function's value). */
