@@ -40,6 +40,14 @@ namespace ausroll::adaptivity
         "contact: cells closer than this to a die (mm) are refined; cells farther than "
         "twice the band plus their size may be coarsened.");
     prm.declare_entry(
+        "Fine contact band",
+        "0",
+        Patterns::Double(0.),
+        "contact: a graded band (0: off). Only cells closer than this to a die (mm) are refined "
+        "to Maximum level; the other cells of the Contact band are refined to Maximum level - 1, "
+        "and cells on Maximum level farther than twice this value plus their size may be "
+        "coarsened to Maximum level - 1. Must not exceed Contact band.");
+    prm.declare_entry(
         "Maximum level", "8", Patterns::Integer(0, 30), "No cell is refined beyond this level.");
     prm.declare_entry(
         "Minimum level", "0", Patterns::Integer(0, 30), "No cell is coarsened below this level.");
@@ -83,6 +91,7 @@ namespace ausroll::adaptivity
     refine_fraction = prm.get_double("Refine fraction");
     coarsen_fraction = prm.get_double("Coarsen fraction");
     contact_band = prm.get_double("Contact band");
+    fine_contact_band = prm.get_double("Fine contact band");
     max_level = prm.get_integer("Maximum level");
     min_level = prm.get_integer("Minimum level");
     min_cell_size = prm.get_double("Minimum cell size");
@@ -93,6 +102,12 @@ namespace ausroll::adaptivity
     require(refine_fraction + coarsen_fraction <= 1.,
             "Adaptivity/Coarsen fraction",
             "Refine fraction + Coarsen fraction must not exceed 1");
+    require(fine_contact_band <= contact_band,
+            "Adaptivity/Fine contact band",
+            "must not exceed Contact band");
+    require(fine_contact_band == 0. || max_level >= 1,
+            "Adaptivity/Fine contact band",
+            "needs Maximum level >= 1");
     require(min_level <= max_level, "Adaptivity/Minimum level", "must not exceed Maximum level");
   }
 } // namespace ausroll::adaptivity

@@ -54,6 +54,10 @@ namespace ausroll::adaptivity
   {
     const unsigned int n_cells = triangulation.n_active_cells();
     std::vector<bool>  refine(n_cells, false), coarsen(n_cells, true);
+    // Highest level a cell may be refined to, and the level above which it may be coarsened
+    // even inside the contact band (Fine contact band: graded band).
+    std::vector<unsigned int> level_cap(n_cells, parameters.max_level);
+    std::vector<bool>         coarsen_to_cap(n_cells, false);
 
     if (parameters.kelly)
     {
@@ -125,6 +129,13 @@ namespace ausroll::adaptivity
             refine[k] = true;
           if (d < 2. * (parameters.contact_band + size))
             coarsen[k] = false;
+          if (parameters.fine_contact_band > 0.)
+          {
+            if (!(d < parameters.fine_contact_band + 0.5 * size))
+              level_cap[k] = parameters.max_level - 1;
+            if (!(d < 2. * (parameters.fine_contact_band + size)))
+              coarsen_to_cap[k] = true;
+          }
         }
     }
 
@@ -135,6 +146,7 @@ namespace ausroll::adaptivity
             if (point->committed.equivalent_plastic_strain > parameters.keep_plastic_strain)
             {
               coarsen[cell->active_cell_index()] = false;
+              coarsen_to_cap[cell->active_cell_index()] = false;
               break;
             }
 
@@ -147,13 +159,16 @@ namespace ausroll::adaptivity
       if (!cell->is_locally_owned())
         continue;
       const unsigned int k = cell->active_cell_index();
-      if (refine[k] && cell->level() < static_cast<int>(parameters.max_level)
+      const int          level = cell->level();
+      if (refine[k] && level < static_cast<int>(level_cap[k])
           && 0.5 * cell->minimum_vertex_distance() >= parameters.min_cell_size)
       {
         cell->set_refine_flag();
         any = true;
       }
-      else if (coarsen[k] && !refine[k] && cell->level() > static_cast<int>(parameters.min_level))
+      else if (level > static_cast<int>(parameters.min_level)
+               && ((coarsen[k] && !refine[k])
+                   || (coarsen_to_cap[k] && level > static_cast<int>(level_cap[k]))))
       {
         cell->set_coarsen_flag();
         any = true;

@@ -22,8 +22,11 @@ namespace ausroll::adaptivity
     double       refine_fraction = 0.3;   ///< `Refine fraction` (Kelly, plastic strain)
     double       coarsen_fraction = 0.05; ///< `Coarsen fraction` (Kelly, plastic strain)
     double       contact_band = 1.;       ///< `Contact band` (mm)
-    unsigned int max_level = 8;           ///< `Maximum level` of refinement
-    unsigned int min_level = 0;           ///< `Minimum level` (no coarsening below)
+    /** `Fine contact band` (mm; 0: off): with the contact indicator, only cells this close to a
+        die reach `Maximum level`; the rest of the `Contact band` stops one level below. */
+    double       fine_contact_band = 0.;
+    unsigned int max_level = 8;      ///< `Maximum level` of refinement
+    unsigned int min_level = 0;      ///< `Minimum level` (no coarsening below)
     double       min_cell_size = 0.; ///< `Minimum cell size` (mm; cells this small are not refined)
     /** `Keep plastic strain above`: cells with a point above this equivalent plastic strain are
         not coarsened (0: off), so that the plastically deformed layer keeps its resolution. */

@@ -27,7 +27,10 @@ namespace ausroll::adaptivity
    *  - Kelly: KellyErrorEstimator of the displacement, fixed fractions.
    *  - contact: the deformed cell centre is closer than `Contact band` plus half the cell size to a
    *    die (@p die_distance covers the present and the next die position); coarsening allowed
-   *    beyond twice that.
+   *    beyond twice that. With `Fine contact band` > 0 the band is graded: cells farther than
+   *    that (plus half their size) are refined at most to `Maximum level` - 1 (whichever
+   *    indicator asks), and cells on `Maximum level` beyond twice it plus their size are
+   *    coarsened to that level.
    *  - plastic strain: max - min of the equivalent plastic strain over the cell's points, fixed
    *    fractions (marks the elastic-plastic front and strong gradients).
    *  - `Keep plastic strain above` > 0: no cell with a point above that equivalent plastic strain
