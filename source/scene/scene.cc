@@ -138,6 +138,7 @@ namespace ausroll::scene
   bool Scene<dim>::adapt_mesh(const double next_time)
   {
     const adaptivity::AdaptivityParameters &p = parameters.adaptivity;
+    unsigned int                            n_refined = 0, n_coarsened = 0;
     {
       TimerOutput::Scope                 scope(*timer, "adaptivity");
       const adaptivity::DieDistance<dim> die_distance
@@ -156,6 +157,18 @@ namespace ausroll::scene
                                   die_distance))
         return false;
 
+      // The flags as they will be executed (2:1 balance, whole families coarsened), counted for
+      // the log: cells split and cells merged into their parents.
+      system.triangulation.prepare_coarsening_and_refinement();
+      for (const auto &cell : system.triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          n_refined += cell->refine_flag_set() ? 1 : 0;
+          n_coarsened += cell->coarsen_flag_set() ? 1 : 0;
+        }
+      n_refined = Utilities::MPI::sum(n_refined, comm);
+      n_coarsened = Utilities::MPI::sum(n_coarsened, comm);
+
       // Carry displacement, material points and contact statuses to the new mesh.
       const std::vector<double> contact_state = contact.pack_state();
       linear_solver.matrix_pattern_changed();
@@ -170,7 +183,8 @@ namespace ausroll::scene
       setup_postprocessing();
     }
     log << "  mesh adapted: " << system.triangulation.n_global_active_cells() << " cells, "
-        << system.dof_handler.n_dofs() << " DoFs" << std::endl;
+        << system.dof_handler.n_dofs() << " DoFs (" << n_refined << " cells refined, "
+        << n_coarsened << " coarsened)" << std::endl;
 
     // Before the first step (initial refinement cycles, t = 0) nothing has been solved yet: the
     // interpolated state is the undeformed one and Newton would only chase round-off.

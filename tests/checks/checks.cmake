@@ -715,3 +715,18 @@ set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
   ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_3d_round_adaptive_short.prm)
 ausroll_add_parallel_check(NAME disk_rolling_3d_round_adaptive_short_np2
   PRM ${_disk3d_adaptive_np2} HISTORY out/history.csv)
+
+# Coarsening behind the die in 3D (issue 15, item 4): the short adaptive round run with the narrow
+# band of prm/disk_rolling_3d_round_adaptive.prm (2 mm, Keep plastic strain above = 0.05), fed at
+# 90 degrees, lifted, moved 90 degrees while lifted (one step stands for the rolling past) and fed
+# again: the cell count drops, every coarse cell more than 60 degrees from the die is back at level
+# 0 or kept at level 1 by its plastic strain (the groove), the new groove is at level 1, force sign,
+# no force while lifted, Coulomb cone per node (1e-8). About 11 s CPU. The np = 2 twin (coarsening
+# and material-point transfer on two ranks) equals np = 1 to 1e-7 of each column's largest value:
+# the tangential force is nominally zero here (die fed normal to the rim), its largest value is
+# 1.4e-3 N (1e-7 of the radial force) and its np difference 1.5e-11 N, round-off of the 1.25e4 N
+# radial force, i.e. 1.07e-8 of that column (measured); every other column within 8.9e-10.
+ausroll_add_script_check(NAME disk_rolling_3d_round_coarsen_short
+  SCRIPT ${AUSROLL_CHECKS_DIR}/check_disk_rolling_3d_coarsen.py)
+ausroll_add_parallel_check(NAME disk_rolling_3d_round_coarsen_short_np2 TOL 1e-7
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_3d_round_coarsen_short.prm HISTORY out/history.csv)
