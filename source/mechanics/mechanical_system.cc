@@ -183,8 +183,9 @@ namespace ausroll::mechanics
   }
 
   template <int dim>
-  void MechanicalSystem<dim>::execute_refinement(const std::function<void()> &attach_data,
-                                                 const std::function<void()> &unpack_data)
+  std::pair<unsigned int, unsigned int>
+  MechanicalSystem<dim>::execute_refinement(const std::function<void()> &attach_data,
+                                            const std::function<void()> &unpack_data)
   {
     parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
     // the converged solution before this one too: the predictor of the next step extrapolates
@@ -192,6 +193,15 @@ namespace ausroll::mechanics
     Vector previous_ghosted(owned_dofs, relevant_dofs, comm);
     previous_ghosted = previous_start;
     triangulation.prepare_coarsening_and_refinement();
+    unsigned int n_refined = 0, n_coarsened = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        n_refined += cell->refine_flag_set() ? 1 : 0;
+        n_coarsened += cell->coarsen_flag_set() ? 1 : 0;
+      }
+    n_refined = Utilities::MPI::sum(n_refined, comm);
+    n_coarsened = Utilities::MPI::sum(n_coarsened, comm);
     transfer.prepare_for_coarsening_and_refinement(
         std::vector<const Vector *>{&solution_ghosted, &previous_ghosted});
     attach_data();
@@ -210,6 +220,7 @@ namespace ausroll::mechanics
     solution_ghosted = solution;
     step_start = solution;
     previous_start = previous_interpolated;
+    return {n_refined, n_coarsened};
   }
 
   template <int dim>

@@ -10,6 +10,7 @@
 #include <ausroll/scene/setup_checks.h>
 
 #include <algorithm>
+#include <tuple>
 
 #include <deal.II/base/mpi.h>
 
@@ -157,27 +158,17 @@ namespace ausroll::scene
                                   die_distance))
         return false;
 
-      // The flags as they will be executed (2:1 balance, whole families coarsened), counted for
-      // the log: cells split and cells merged into their parents.
-      system.triangulation.prepare_coarsening_and_refinement();
-      for (const auto &cell : system.triangulation.active_cell_iterators())
-        if (cell->is_locally_owned())
-        {
-          n_refined += cell->refine_flag_set() ? 1 : 0;
-          n_coarsened += cell->coarsen_flag_set() ? 1 : 0;
-        }
-      n_refined = Utilities::MPI::sum(n_refined, comm);
-      n_coarsened = Utilities::MPI::sum(n_coarsened, comm);
-
       // Carry displacement, material points and contact statuses to the new mesh.
       const std::vector<double> contact_state = contact.pack_state();
       linear_solver.matrix_pattern_changed();
-      system.execute_refinement([this]() { point_transfer->prepare(); },
-                                [this]()
-                                {
-                                  setup_dof_dependents();
-                                  point_transfer->unpack();
-                                });
+      // (the counts for the log: cells split and cells merged into their parents)
+      std::tie(n_refined, n_coarsened)
+          = system.execute_refinement([this]() { point_transfer->prepare(); },
+                                      [this]()
+                                      {
+                                        setup_dof_dependents();
+                                        point_transfer->unpack();
+                                      });
       system.rebase_material_points(*assembler, *model);
       contact.unpack_state(contact_state);
       setup_postprocessing();

@@ -131,7 +131,9 @@ namespace ausroll::solver
         // pivoting when it is not at round-off level. A relative linear residual of 1e-10 keeps
         // Newton quadratic down to its tolerance; on the gear scene the kept pivots leave
         // 4e-16 to 3e-13 (doc/benchmarks.md, "Direct solver: kept pivots").
-        TrilinosWrappers::MPI::Vector r(b);
+        TrilinosWrappers::MPI::Vector &r = pivot_check_residual;
+        if (r.size() != b.size() || r.locally_owned_elements() != b.locally_owned_elements())
+          r.reinit(b, true);
         A.vmult(r, x);
         r -= b;
         if (!(r.l2_norm() <= 1e-10 * b.l2_norm()))

@@ -20,6 +20,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <functional>
+#include <utility>
 
 namespace ausroll::mechanics
 {
@@ -98,10 +99,14 @@ namespace ausroll::mechanics
      * Refine / coarsen the mesh as flagged, carrying the solution along: @p attach_data (e.g.
      * MaterialPointTransfer::prepare()) runs just before the mesh changes, @p unpack_data (e.g.
      * MaterialPointTransfer::unpack()) after setup_system() on the new mesh. The interpolated
-     * solution (hanging nodes distributed) becomes solution and step_start.
+     * solution (hanging nodes distributed) becomes solution and step_start. Returns the cells
+     * split and the cells merged into their parents (over all ranks), counted from the flags as
+     * executed (after the 2:1 balance and the whole-family rule of
+     * prepare_coarsening_and_refinement()).
      */
-    void execute_refinement(const std::function<void()> &attach_data,
-                            const std::function<void()> &unpack_data);
+    std::pair<unsigned int, unsigned int>
+    execute_refinement(const std::function<void()> &attach_data,
+                       const std::function<void()> &unpack_data);
 
     /** Make the material points consistent with the current displacement while keeping their
         stresses (ConstitutiveModel::rebase with the F the material sees, F-bar included). */

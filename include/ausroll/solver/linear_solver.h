@@ -94,6 +94,8 @@ namespace ausroll::solver
     /** The direct solver refactorises with kept pivots (KLU), checked by the residual. */
     mutable bool         reuse_pivots = false;
     mutable unsigned int pivoting_refactorisations = 0;
+    /** Residual of the kept-pivot check (a member: not allocated at every solve). */
+    mutable dealii::TrilinosWrappers::MPI::Vector pivot_check_residual;
     /** Amesos problem and solver of the direct path, kept between solves with one pattern. */
     mutable std::unique_ptr<Epetra_LinearProblem> direct_problem;
     mutable std::unique_ptr<Amesos_BaseSolver>    direct_solver;
