@@ -63,6 +63,23 @@ namespace ausroll::adaptivity
                       "left behind a die keeps the resolution it was formed on. Works with every "
                       "indicator.");
     prm.declare_entry(
+        "Plastic coarsening level",
+        "-1",
+        Patterns::Integer(-1, 30),
+        "With Keep plastic strain above > 0: the level down to which a cell with a material point "
+        "above that plastic strain may still be coarsened where every indicator allows it (with "
+        "contact: farther from the die than the coarsening distance, i.e. once the die has left); "
+        "-1: such cells are never coarsened. E.g. 1 with Maximum level = 2 keeps the groove behind "
+        "a die at level 1 instead of the finest level, so that the refined band does not grow with "
+        "the rolled length. Must lie between Minimum level and Maximum level.");
+    prm.declare_entry(
+        "Coarsening distance",
+        "0",
+        Patterns::Double(0.),
+        "contact: cells farther than this (mm) plus their size from a die may be coarsened (0: "
+        "twice the Contact band plus the cell size). Must be 0 or at least the Contact band, so "
+        "that a coarsened cell is not refined again at the next adaptation.");
+    prm.declare_entry(
         "State transfer",
         "polynomial",
         Patterns::Selection("polynomial|nearest point"),
@@ -96,6 +113,8 @@ namespace ausroll::adaptivity
     min_level = prm.get_integer("Minimum level");
     min_cell_size = prm.get_double("Minimum cell size");
     keep_plastic_strain = prm.get_double("Keep plastic strain above");
+    plastic_coarsening_level = prm.get_integer("Plastic coarsening level");
+    coarsening_distance = prm.get_double("Coarsening distance");
     reequilibrate = prm.get_bool("Re-equilibrate");
     polynomial_transfer = prm.get("State transfer") == "polynomial";
     prm.leave_subsection();
@@ -109,5 +128,16 @@ namespace ausroll::adaptivity
             "Adaptivity/Fine contact band",
             "needs Maximum level >= 1");
     require(min_level <= max_level, "Adaptivity/Minimum level", "must not exceed Maximum level");
+    require(plastic_coarsening_level < 0 || keep_plastic_strain > 0.,
+            "Adaptivity/Plastic coarsening level",
+            "needs Keep plastic strain above > 0 (it applies to the cells kept by that limit)");
+    require(plastic_coarsening_level < 0
+                || (plastic_coarsening_level >= static_cast<int>(min_level)
+                    && plastic_coarsening_level <= static_cast<int>(max_level)),
+            "Adaptivity/Plastic coarsening level",
+            "must lie between Minimum level and Maximum level (or be -1: off)");
+    require(coarsening_distance == 0. || coarsening_distance >= contact_band,
+            "Adaptivity/Coarsening distance",
+            "must be 0 or at least Contact band (a coarsened cell would be refined again)");
   }
 } // namespace ausroll::adaptivity

@@ -58,6 +58,10 @@ namespace ausroll::adaptivity
     // even inside the contact band (Fine contact band: graded band).
     std::vector<unsigned int> level_cap(n_cells, parameters.max_level);
     std::vector<bool>         coarsen_to_cap(n_cells, false);
+    // Lowest level a cell may be coarsened to: Minimum level, or for cells kept by Keep plastic
+    // strain above, Plastic coarsening level (never coarsened if that is off).
+    constexpr int    never = std::numeric_limits<int>::max();
+    std::vector<int> coarsen_floor(n_cells, static_cast<int>(parameters.min_level));
 
     if (parameters.kelly)
     {
@@ -127,7 +131,10 @@ namespace ausroll::adaptivity
           const unsigned   k = cell->active_cell_index();
           if (d < parameters.contact_band + 0.5 * size)
             refine[k] = true;
-          if (d < 2. * (parameters.contact_band + size))
+          const double coarsening_distance = parameters.coarsening_distance > 0.
+                                                 ? parameters.coarsening_distance + size
+                                                 : 2. * (parameters.contact_band + size);
+          if (d < coarsening_distance)
             coarsen[k] = false;
           if (parameters.fine_contact_band > 0.)
           {
@@ -145,8 +152,11 @@ namespace ausroll::adaptivity
           for (const auto &point : material_points.get_data(cell))
             if (point->committed.equivalent_plastic_strain > parameters.keep_plastic_strain)
             {
-              coarsen[cell->active_cell_index()] = false;
-              coarsen_to_cap[cell->active_cell_index()] = false;
+              const unsigned int k = cell->active_cell_index();
+              coarsen_floor[k]
+                  = parameters.plastic_coarsening_level < 0
+                        ? never
+                        : std::max(coarsen_floor[k], parameters.plastic_coarsening_level);
               break;
             }
 
@@ -166,7 +176,7 @@ namespace ausroll::adaptivity
         cell->set_refine_flag();
         any = true;
       }
-      else if (level > static_cast<int>(parameters.min_level)
+      else if (level > coarsen_floor[k]
                && ((coarsen[k] && !refine[k])
                    || (coarsen_to_cap[k] && level > static_cast<int>(level_cap[k]))))
       {

@@ -730,3 +730,17 @@ ausroll_add_script_check(NAME disk_rolling_3d_round_coarsen_short
   SCRIPT ${AUSROLL_CHECKS_DIR}/check_disk_rolling_3d_coarsen.py)
 ausroll_add_parallel_check(NAME disk_rolling_3d_round_coarsen_short_np2 TOL 1e-7
   PRM ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_3d_round_coarsen_short.prm HISTORY out/history.csv)
+
+# Coarsening behind the die WHILE ROLLING in 3D (issue 15, item 4): the short adaptive round run
+# with the 2 mm band and a short Coarsening distance of 2 mm (level-1 cells coarsen 11.1 mm from the
+# die instead of 22 mm), fed at 90 degrees and rolled 17.5 degrees in 2.5 degree steps, re-adapted
+# after every step: an adaptation after a rolling step coarsens cells (log line; the cell count
+# drops and the next rolling step runs on the coarser mesh), the coarse cells back at level 0 lie
+# behind the die (>= 15 degrees), the groove at the die stays at level 1, force_radial < 0 and
+# within 2 % of the same position in the 7.5 degree cell pattern after the coarsening, Coulomb cone
+# per node (1e-8). About 19 s CPU. The np = 2 twin (coarsening and material-point transfer across two
+# ranks while rolling) equals np = 1 to 1e-8 of each column's largest value.
+ausroll_add_script_check(NAME disk_rolling_3d_round_coarsen_rolling
+  SCRIPT ${AUSROLL_CHECKS_DIR}/check_disk_rolling_3d_coarsen_rolling.py)
+ausroll_add_parallel_check(NAME disk_rolling_3d_round_coarsen_rolling_np2
+  PRM ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_3d_round_coarsen_rolling.prm HISTORY out/history.csv)

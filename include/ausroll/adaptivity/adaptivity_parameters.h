@@ -31,6 +31,13 @@ namespace ausroll::adaptivity
     /** `Keep plastic strain above`: cells with a point above this equivalent plastic strain are
         not coarsened (0: off), so that the plastically deformed layer keeps its resolution. */
     double keep_plastic_strain = 0.;
+    /** `Plastic coarsening level` (-1: off): cells kept by `Keep plastic strain above` may still
+        be coarsened, but not below this level, where every indicator allows coarsening (with the
+        contact indicator: farther from the die than the coarsening distance). */
+    int plastic_coarsening_level = -1;
+    /** `Coarsening distance` (mm; 0: twice `Contact band` plus the cell size): with the contact
+        indicator, cells farther than this plus their size from a die may be coarsened. */
+    double coarsening_distance = 0.;
     bool   reequilibrate = true;       ///< `Re-equilibrate` after transfer
     bool   polynomial_transfer = true; ///< `State transfer` = polynomial (else nearest point)
 

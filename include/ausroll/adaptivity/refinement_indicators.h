@@ -27,14 +27,16 @@ namespace ausroll::adaptivity
    *  - Kelly: KellyErrorEstimator of the displacement, fixed fractions.
    *  - contact: the deformed cell centre is closer than `Contact band` plus half the cell size to a
    *    die (@p die_distance covers the present and the next die position); coarsening allowed
-   *    beyond twice that. With `Fine contact band` > 0 the band is graded: cells farther than
-   *    that (plus half their size) are refined at most to `Maximum level` - 1 (whichever
-   *    indicator asks), and cells on `Maximum level` beyond twice it plus their size are
-   *    coarsened to that level.
+   *    beyond twice that (or beyond `Coarsening distance` plus the cell size if that is set). With
+   * `Fine contact band` > 0 the band is graded: cells farther than that (plus half their size) are
+   * refined at most to `Maximum level` - 1 (whichever indicator asks), and cells on `Maximum level`
+   * beyond twice it plus their size are coarsened to that level.
    *  - plastic strain: max - min of the equivalent plastic strain over the cell's points, fixed
    *    fractions (marks the elastic-plastic front and strong gradients).
    *  - `Keep plastic strain above` > 0: no cell with a point above that equivalent plastic strain
-   *    is coarsened.
+   *    is coarsened; with `Plastic coarsening level` >= 0 such a cell is coarsened where the
+   *    indicators allow it, but not below that level (the plastic groove behind a die is kept at
+   *    an intermediate level instead of the finest one).
    * Returns true if any cell (on any rank) is flagged.
    */
   template <int dim>
