@@ -72,10 +72,12 @@ namespace ausroll::solver
         converged = true;
       }
       // Constraints that depend on the solution (nested active set) are updated once the
-      // reactions are accurate to 1e-4 of the force level: the last quadratic iterations of an
-      // intermediate pass would not change the statuses.
+      // reactions are accurate to `Status pass tolerance` (1e-4) of the force level: the last
+      // quadratic iterations of an intermediate pass would not change the statuses.
       const bool nearly_converged
-          = constraints_ok && norm <= std::max(tolerance, 1e-4 * reference) && it > pass_start;
+          = constraints_ok
+            && norm <= std::max(tolerance, parameters.status_pass_tolerance * reference)
+            && it > pass_start;
       unsigned int changes = 0;
       if (converged || nearly_converged)
       {

@@ -27,6 +27,17 @@ namespace ausroll::solver
         Patterns::Double(1.),
         "A step is abandoned when the residual exceeds this multiple of its first value.");
     prm.declare_entry(
+        "Status pass tolerance",
+        "1e-4",
+        Patterns::Double(0., 1.),
+        "Constraints that depend on the solution (the contact statuses of Contact/Strategy = "
+        "nested active set) are judged at an iterate whose out-of-balance force is below this "
+        "fraction of the force level (or at convergence, if Residual tolerance is looser). The "
+        "statuses that no longer change are then converged to Residual tolerance, so the answer "
+        "is a converged state with consistent statuses whatever the value; a looser value saves "
+        "the last iterations of the intermediate passes, but statuses are judged on less accurate "
+        "reactions and may take another path (doc/scenes/disk_rolling.md).");
+    prm.declare_entry(
         "Line search",
         "true",
         Patterns::Bool(),
@@ -89,6 +100,7 @@ namespace ausroll::solver
     residual_tolerance = prm.get_double("Residual tolerance");
     absolute_tolerance = prm.get_double("Absolute residual tolerance");
     divergence_factor = prm.get_double("Divergence factor");
+    status_pass_tolerance = prm.get_double("Status pass tolerance");
     line_search = prm.get_bool("Line search");
     prm.enter_subsection("Linear solver");
     const std::string type = prm.get("Type");

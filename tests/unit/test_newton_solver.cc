@@ -55,6 +55,8 @@ namespace
     }
     unsigned int update_constraints_at_convergence(dealii::ConditionalOStream &) override
     {
+      if (updates == 0)
+        first_update_residual = std::abs(residual);
       ++updates;
       if (always_change)
         return 1;
@@ -76,6 +78,7 @@ namespace
     bool         always_change = false;
     double       u = 0., start = 0., increment = 0., residual = 0., jacobian = 1.;
     unsigned int assemblies = 0, updates = 0;
+    double       first_update_residual = -1.; ///< |r| at the first judgement of the constraint
   };
 
   SolverParameters parameters()
@@ -167,4 +170,30 @@ TEST(NewtonSolver, ConstraintsJudgedBeforeFullConvergence)
   ASSERT_TRUE(result.converged);
   EXPECT_GE(problem.updates, 2u); // near convergence and at convergence
   EXPECT_NEAR(problem.u, free_solution(10.), 1e-12);
+}
+
+// `Solver/Status pass tolerance`: the constraint is judged once |r| <= tolerance * force level.
+// With 0.1 the free pass (f = 10, stop g = 1.5 passed by the free root u = 2) is cut off at an
+// iterate with |r| <= 1 (not converged: above 1e-4 * 10), with the default only below 1e-3; the
+// closed state and its reaction are the same exact answer either way (u = g, r = -5.125), since
+// the last pass is converged to the residual tolerance with the final constraint.
+TEST(NewtonSolver, StatusPassToleranceJudgesConstraintsEarlierWithTheSameAnswer)
+{
+  dealii::ConditionalOStream log(std::cout, false);
+  SolverParameters           loose = parameters();
+  loose.status_pass_tolerance = 0.1;
+  StopProblem        early(10., 1.5, false);
+  const NewtonResult early_result = NewtonSolver(loose).solve(early, log);
+  StopProblem        tight(10., 1.5, false);
+  const NewtonResult tight_result = solve(tight);
+  ASSERT_TRUE(early_result.converged) << early_result.reason;
+  ASSERT_TRUE(tight_result.converged) << tight_result.reason;
+  EXPECT_LE(early.first_update_residual, 0.1 * 10.);
+  EXPECT_GT(early.first_update_residual, 1e-4 * 10.);
+  EXPECT_LE(tight.first_update_residual, 1e-4 * 10.);
+  EXPECT_LT(early_result.iterations, tight_result.iterations);
+  EXPECT_EQ(early_result.outer_passes, 1u);
+  EXPECT_TRUE(early.closed);
+  EXPECT_NEAR(early.u, 1.5, 1e-14);
+  EXPECT_NEAR(early.residual, -5.125, 1e-12);
 }

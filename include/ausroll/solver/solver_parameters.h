@@ -51,8 +51,11 @@ namespace ausroll::solver
     double       residual_tolerance = 1e-9;  ///< `Residual tolerance` (relative to the force level)
     double       absolute_tolerance = 1e-10; ///< `Absolute residual tolerance` (N)
     double       divergence_factor = 1e6;    ///< `Divergence factor`: abort when |r| grows by it
-    bool         line_search = true;         ///< `Line search`
-    LinearSolverParameters linear;           ///< subsection `Linear solver`
+    /** `Status pass tolerance`: constraints that depend on the solution (nested active set) are
+        judged once |r| is below this fraction of the force level (or converged). */
+    double                 status_pass_tolerance = 1e-4;
+    bool                   line_search = true; ///< `Line search`
+    LinearSolverParameters linear;             ///< subsection `Linear solver`
 
     /** Declare subsection `Solver`. */
     static void declare_parameters(dealii::ParameterHandler &prm);
