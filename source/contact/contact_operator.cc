@@ -224,10 +224,10 @@ namespace ausroll::contact
   }
 
   template <int dim>
-  unsigned int
-  ContactOperator<dim>::add_slip_direction_tangent(const AffineConstraints<double> &constraints,
-                                                   TrilinosWrappers::SparseMatrix  &matrix,
-                                                   TrilinosWrappers::MPI::Vector   &rhs) const
+  unsigned int ContactOperator<dim>::add_slip_direction_tangent(
+      [[maybe_unused]] const AffineConstraints<double> &constraints,
+      TrilinosWrappers::SparseMatrix                   &matrix,
+      TrilinosWrappers::MPI::Vector                    &rhs) const
   {
     unsigned int n_terms = 0;
     if constexpr (dim == 3)
@@ -255,10 +255,6 @@ namespace ausroll::contact
         constraints.distribute_local_to_global(block, zero, dofs, matrix, rhs, true);
         ++n_terms;
       }
-    }
-    else
-    {
-      (void)constraints;
     }
     matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
