@@ -30,11 +30,10 @@ import csv
 import math
 import os
 import re
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checklist import Checklist, CoulombCone  # noqa: E402
+from checklist import Checklist, run_scene, CoulombCone  # noqa: E402
 from check_disk_rolling_3d_adaptive import arrays  # noqa: E402
 
 MU = 0.3
@@ -71,14 +70,11 @@ def angle_from_die(key):
 def main():
     ausroll, source = sys.argv[1], sys.argv[2]
     prm = os.path.join(source, "tests", "checks", "scenes", "disk_rolling_3d_round_coarsen_short.prm")
-    run = subprocess.run([ausroll, prm, "--overwrite"], capture_output=True, text=True)
-    print(run.stdout)
-    if run.returncode != 0:
-        print(run.stderr)
-        print(f"FAIL {prm} exited with {run.returncode}")
+    stdout = run_scene(ausroll, prm)
+    if stdout is None:
         return 1
     checks = Checklist()
-    coarsened = [int(m.group(1)) for m in re.finditer(r"mesh adapted: .*, (\d+) coarsened\)", run.stdout)]
+    coarsened = [int(m.group(1)) for m in re.finditer(r"mesh adapted: .*, (\d+) coarsened\)", stdout)]
     checks(f"coarsened cells per adaptation {coarsened}: some > 0", any(c > 0 for c in coarsened))
     rows = {round(float(r["time"]), 9): r for r in csv.DictReader(open("out/history.csv"))}
     cells = {t: int(r["cells"]) for t, r in rows.items()}

@@ -30,11 +30,10 @@ The np = 2 twin (check/disk_rolling_3d_round_coarsen_rolling_np2) compares the h
 import csv
 import os
 import re
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checklist import Checklist, CoulombCone  # noqa: E402
+from checklist import Checklist, run_scene, CoulombCone  # noqa: E402
 from check_disk_rolling_3d_coarsen import coarse_cells  # noqa: E402
 
 MU = 0.3
@@ -60,17 +59,14 @@ def adaptations(log):
 def main():
     ausroll, source = sys.argv[1], sys.argv[2]
     prm = os.path.join(source, "tests", "checks", "scenes", "disk_rolling_3d_round_coarsen_rolling.prm")
-    run = subprocess.run([ausroll, prm, "--overwrite"], capture_output=True, text=True)
-    print(run.stdout)
-    if run.returncode != 0:
-        print(run.stderr)
-        print(f"FAIL {prm} exited with {run.returncode}")
+    stdout = run_scene(ausroll, prm)
+    if stdout is None:
         return 1
     checks = Checklist()
     rows = {round(float(r["time"])): r for r in csv.DictReader(open("out/history.csv"))}
     last = max(rows)
     revolution = {t: float(r["die_roll_revolution"]) for t, r in rows.items()}
-    rolled = [(t, c) for t, c in adaptations(run.stdout) if t > FEED_END and t < last]
+    rolled = [(t, c) for t, c in adaptations(stdout) if t > FEED_END and t < last]
     checks(f"coarsened cells per adaptation after a rolling step {rolled}: some > 0",
            any(c > 0 for _, c in rolled))
     cells = {t: int(r["cells"]) for t, r in rows.items()}

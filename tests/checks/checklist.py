@@ -1,6 +1,20 @@
 """Shared by the scene checks: a list of named assertions, each printed as "ok" or "FAIL", and
 the exit status at the end (the checks are run as ctests, which look at the exit status)."""
 
+import subprocess
+
+
+def run_scene(ausroll, prm):
+    """Run ``ausroll prm --overwrite``, print its output, and return its standard output, or None
+    (with the reason printed) if it failed."""
+    run = subprocess.run([ausroll, prm, "--overwrite"], capture_output=True, text=True)
+    print(run.stdout)
+    if run.returncode != 0:
+        print(run.stderr)
+        print(f"FAIL {prm} exited with {run.returncode}")
+        return None
+    return run.stdout
+
 
 class Checklist:
     """Collects assertions: ``checks(label, ok)`` prints and records one, ``checks.exit_status()``
