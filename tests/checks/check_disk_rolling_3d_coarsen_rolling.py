@@ -104,9 +104,7 @@ def main():
     checks(f"force_radial after the coarsening {radial[last]:.5g} N within {STEADY:.0%} of t = {last - 3} "
            f"({radial[last - 3]:.5g} N): {change:.2%}", change < STEADY)
     cone = CoulombCone([f"out/contact_{t:04d}.csv" for t in rows if t > FEED_END], MU)
-    checks(f"{len(cone.closed)} closed node-steps, |R_T| <= mu R_n (|R_T| / (mu R_n) - 1 = {cone.excess:.3g})",
-           len(cone.closed) > 0 and cone.excess <= 1e-8)
-    checks(f"slipping nodes |R_T| = mu R_n (worst {cone.slip:.2g})", cone.slip <= 1e-8)
+    cone.check(checks)
     return checks.exit_status()
 
 

@@ -61,3 +61,11 @@ class CoulombCone:
                     self.excess = max(self.excess, ratio - 1.0)
                     if int(r["status"]) == 2:
                         self.slip = max(self.slip, abs(ratio - 1.0))
+
+    def check(self, checks, tolerance=1e-8):
+        """Record in @p checks (a Checklist): some node-steps closed, every one inside the cone
+        and every slipping one on it, to @p tolerance."""
+        checks(f"{len(self.closed)} closed node-steps, |R_T| <= mu R_n "
+               f"(|R_T| / (mu R_n) - 1 = {self.excess:.3g})",
+               len(self.closed) > 0 and self.excess <= tolerance)
+        checks(f"slipping nodes |R_T| = mu R_n (worst {self.slip:.2g})", self.slip <= tolerance)
