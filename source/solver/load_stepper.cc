@@ -65,16 +65,22 @@ namespace ausroll::solver
         }
         ++step.cutbacks;
         log << "  step " << number << " (t = " << time << "): " << result.reason;
-        if (step.cutbacks > loading.max_cutbacks)
+        const bool too_small = 0.5 * dt < minimum_step_size();
+        if (step.cutbacks > loading.max_cutbacks || too_small)
         {
           log << std::endl;
           // Keep the last converged state in memory and on disk.
           const std::string  note = problem.keep_last_converged(t_start);
           std::ostringstream msg;
-          msg << "load step " << number << " (t = " << t_start + dt << ") did not converge after "
-              << loading.max_cutbacks << " cutbacks: " << result.reason
-              << ". The last converged state (step " << number - 1 << ", t = " << t_start
-              << ") is in " << output_directory << "/";
+          msg << "load step " << number << " (t = " << t_start + dt << ") did not converge ";
+          if (step.cutbacks > loading.max_cutbacks)
+            msg << "after " << loading.max_cutbacks << " cutbacks";
+          else
+            msg << "with dt = " << dt << ", and half of it is below Loading/Minimum step "
+                << "fraction = " << loading.minimum_step_fraction << " of the nominal step ("
+                << minimum_step_size() << ")";
+          msg << ": " << result.reason << ". The last converged state (step " << number - 1
+              << ", t = " << t_start << ") is in " << output_directory << "/";
           if (!note.empty())
             msg << ". Earlier, " << note;
           throw RunFailure(msg.str());
@@ -94,6 +100,11 @@ namespace ausroll::solver
     }
   }
 
+  double LoadStepper::minimum_step_size() const
+  {
+    return loading.minimum_step_fraction * nominal_step_size();
+  }
+
   double LoadStepper::next_step_size(const double       dt,
                                      const double       dt_taken,
                                      const LoadStep    &step,
@@ -107,7 +118,8 @@ namespace ausroll::solver
       double factor = loading.step_factor(step.result.iterations, status_changes);
       if (step.cutbacks > 0)
         factor = std::min(factor, 1.);
-      const double next = std::min(nominal_dt, (step.cutbacks > 0 ? dt_taken : dt) * factor);
+      const double next = std::clamp(
+          (step.cutbacks > 0 ? dt_taken : dt) * factor, minimum_step_size(), nominal_dt);
       detail_log << "  step control: " << step.result.iterations << " Newton iterations, "
                  << status_changes << " contact status changes, " << step.cutbacks
                  << " cutbacks: next dt = " << next << std::endl;

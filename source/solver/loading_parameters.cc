@@ -59,6 +59,16 @@ namespace ausroll::solver
                       "Step control = adaptive: the next step is at least this fraction of the "
                       "last one.");
     prm.declare_entry(
+        "Minimum step fraction",
+        "1e-4",
+        Patterns::Double(0., 1.),
+        "Smallest step, as a fraction of the nominal step End time / Number of steps. A cutback "
+        "that would make a step smaller ends the run (exit status 3) with a message naming the "
+        "step, and the last converged state is written, instead of creeping on with ever smaller "
+        "steps; the adaptive step control does not go below it. Steps shortened to end on the "
+        "nominal grid or at a contact status change (Contact/Strategy = load increment ratio) "
+        "may be smaller. 0: no limit.");
+    prm.declare_entry(
         "Volume change limit",
         "0.2",
         Patterns::Double(0., 1.),
@@ -105,6 +115,7 @@ namespace ausroll::solver
     target_newton_iterations = prm.get_integer("Target Newton iterations");
     target_status_changes = prm.get_integer("Target status changes");
     minimum_step_factor = prm.get_double("Minimum step factor");
+    minimum_step_fraction = prm.get_double("Minimum step fraction");
     volume_change_limit = prm.get_double("Volume change limit");
     stop_at_distortion = prm.get_bool("Stop at distorted mesh");
     prm.leave_subsection();

@@ -6,8 +6,9 @@
  * binary fractions, so the times are exact and compared with ==). Tested: halving cutbacks and
  * the size kept after them, growth back to the nominal step, the retry without the predictor
  * (and the predictor ratio dt / dt_prev), the RunFailure message after too many cutbacks with the
- * last converged state, the adaptive step control (shrink by target / actual Newton iterations
- * and status changes, growth after easy steps), and a contact strategy that shortens a step.
+ * last converged state, the Minimum step fraction, the adaptive step control (shrink by target /
+ * actual Newton iterations and status changes, growth after easy steps), and a contact strategy
+ * that shortens a step.
  */
 #include <ausroll/core/exceptions.h>
 #include <ausroll/solver/load_stepper.h>
@@ -237,35 +238,83 @@ TEST(LoadStepper, PredictorRatioIsStepOverLastStep)
   EXPECT_EQ(p.solves[3].ratio, 1.5); // 0.1875 / 0.125
 }
 
+namespace
+{
+  /** Run @p l on a problem whose step 2 never converges: the stepper cuts step 2 back from
+      0.25 to 0.03125 (4 solves) and throws RunFailure with @p message; the last converged
+      state (t = 0.25) is kept. */
+  void expect_failure_of_step_2_at_dt_0_03125(const LoadingParameters &l,
+                                              const std::string       &message)
+  {
+    Logs        logs;
+    LoadStepper stepper(l, "out", logs.log, logs.detail_log);
+    MockProblem p;
+    p.converges = [](unsigned int step, double, double) { return step == 1; };
+    try
+    {
+      stepper.run(p, 0., 0.25, 0);
+      FAIL() << "no RunFailure";
+    }
+    catch (const RunFailure &e)
+    {
+      EXPECT_EQ(std::string(e.what()), message);
+    }
+    ASSERT_EQ(p.accepted.size(), 1u);
+    ASSERT_EQ(p.solves.size(), 5u); // step 1, then 0.25, 0.125, 0.0625, 0.03125
+    EXPECT_EQ(p.solves.back().dt, 0.03125);
+    EXPECT_EQ(p.restarts, 4u);
+    ASSERT_EQ(p.kept.size(), 1u);
+    EXPECT_EQ(p.kept[0], 0.25);
+  }
+} // namespace
+
 // A step that never converges: after Maximum cutbacks (3) the last converged state is kept and
 // RunFailure names the step, the time of the last try, the reason, the last converged step and
 // time, the output directory and the earlier warning.
 TEST(LoadStepper, TooManyCutbacksFailWithLastConvergedState)
 {
-  Logs              logs;
   LoadingParameters l = loading();
   l.max_cutbacks = 3;
+  expect_failure_of_step_2_at_dt_0_03125(
+      l,
+      "load step 2 (t = 0.28125) did not converge after 3 cutbacks: residual diverged. The last "
+      "converged state (step 1, t = 0.25) is in out/. Earlier, the mesh folds at step 0");
+}
+
+// Minimum step fraction 0.1 (0.025 of the nominal 0.25), Maximum cutbacks 20: the same step is
+// cut 0.25 -> 0.125 -> 0.0625 -> 0.03125, whose half is below 0.025, so the run stops there (3
+// cutbacks, not 20) with the last converged state and a message naming the entry.
+TEST(LoadStepper, MinimumStepFractionEndsTheRunInsteadOfCreeping)
+{
+  LoadingParameters l = loading();
+  l.max_cutbacks = 20;
+  l.minimum_step_fraction = 0.1;
+  Logs logs;
+  EXPECT_EQ(LoadStepper(l, "out", logs.log, logs.detail_log).minimum_step_size(), 0.025);
+  expect_failure_of_step_2_at_dt_0_03125(
+      l,
+      "load step 2 (t = 0.28125) did not converge with dt = 0.03125, and half of it is below "
+      "Loading/Minimum step fraction = 0.1 of the nominal step (0.025): residual diverged. The "
+      "last converged state (step 1, t = 0.25) is in out/. Earlier, the mesh folds at step 0");
+}
+
+// The adaptive step control does not shrink below the minimum: 24 Newton iterations (target 6)
+// ask for a quarter of the step at every step, Minimum step fraction 0.5 holds it at 0.125.
+TEST(LoadStepper, AdaptiveStepControlStopsAtTheMinimumStep)
+{
+  Logs              logs;
+  LoadingParameters l = loading();
+  l.step_control = StepControl::adaptive;
+  l.minimum_step_fraction = 0.5;
   LoadStepper stepper(l, "out", logs.log, logs.detail_log);
   MockProblem p;
-  p.converges = [](unsigned int step, double, double) { return step == 1; };
-  try
-  {
-    stepper.run(p, 0., 0.25, 0);
-    FAIL() << "no RunFailure";
-  }
-  catch (const RunFailure &e)
-  {
-    EXPECT_EQ(std::string(e.what()),
-              "load step 2 (t = 0.28125) did not converge after 3 cutbacks: residual diverged. "
-              "The last converged state (step 1, t = 0.25) is in out/. Earlier, the mesh folds "
-              "at step 0");
-  }
-  ASSERT_EQ(p.accepted.size(), 1u);
-  ASSERT_EQ(p.solves.size(), 5u); // step 1, then 0.25, 0.125, 0.0625, 0.03125
-  EXPECT_EQ(p.solves.back().dt, 0.03125);
-  EXPECT_EQ(p.restarts, 4u);
-  ASSERT_EQ(p.kept.size(), 1u);
-  EXPECT_EQ(p.kept[0], 0.25);
+  p.iterations = [](unsigned int) { return 24u; };
+  stepper.run(p, 0., 0.25, 0);
+  EXPECT_EQ(p.times(), (std::vector<double>{0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1.}));
+  EXPECT_NE(logs.details.str().find("  step control: 24 Newton iterations, 0 contact status "
+                                    "changes, 0 cutbacks: next dt = 0.125"),
+            std::string::npos)
+      << logs.details.str();
 }
 
 // Step control = adaptive: 12 Newton iterations (target 6) halve the step, easy steps (<= 3

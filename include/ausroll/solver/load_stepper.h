@@ -85,11 +85,12 @@ namespace ausroll::solver
    * outputs of different runs share their times. A failed solve is first tried again without
    * the predictor (if it was used) and, once per step, with the contact statuses of
    * SteppedProblem::release_after_failure() (if it changed any), then with half the step, at most
-   * `Maximum cutbacks` times; then RunFailure names the step, its time, the reason and where the
-   * last converged state is. The next step size: `Step control = halving` keeps the size that
-   * worked after a cutback and grows by `Step growth factor` (to at most the nominal step)
-   * otherwise; `adaptive` scales it by LoadingParameters::step_factor() of the Newton iterations
-   * and contact status changes (at most 1 after a cutback).
+   * `Maximum cutbacks` times and not below `Minimum step fraction` of the nominal step; then
+   * RunFailure names the step, its time, the reason and where the last converged state is. The next
+   * step size: `Step control = halving` keeps the size that worked after a cutback and grows by
+   * `Step growth factor` (to at most the nominal step) otherwise; `adaptive` scales it by
+   * LoadingParameters::step_factor() of the Newton iterations and contact status changes (at most 1
+   * after a cutback).
    */
   class LoadStepper
   {
@@ -105,6 +106,10 @@ namespace ausroll::solver
 
     /** End time / Number of steps. */
     double nominal_step_size() const;
+
+    /** `Minimum step fraction` of the nominal step: the smallest step a cutback or the
+        adaptive step control gives. */
+    double minimum_step_size() const;
 
     /**
      * Run the steps of @p problem from @p t_done (after @p steps_done converged steps) with the

@@ -46,10 +46,11 @@ namespace ausroll::solver
     Predictor    predictor = Predictor::none;         ///< `Predictor` of the first Newton iterate
     StepControl  step_control = StepControl::halving; ///< `Step control`
     unsigned int target_newton_iterations = 6;        ///< `Target Newton iterations` (adaptive)
-    unsigned int target_status_changes = 4;  ///< `Target status changes` (adaptive; 0: off)
-    double       minimum_step_factor = 0.25; ///< `Minimum step factor`: smallest shrink per step
-    double       volume_change_limit = 0.2;  ///< `Volume change limit`: J outside [l, 1/l] folds
-    bool         stop_at_distortion = false; ///< `Stop at distorted mesh`
+    unsigned int target_status_changes = 4;    ///< `Target status changes` (adaptive; 0: off)
+    double       minimum_step_factor = 0.25;   ///< `Minimum step factor`: smallest shrink per step
+    double       minimum_step_fraction = 1e-4; ///< `Minimum step fraction` of the nominal step
+    double       volume_change_limit = 0.2;    ///< `Volume change limit`: J outside [l, 1/l] folds
+    bool         stop_at_distortion = false;   ///< `Stop at distorted mesh`
 
     /** Declare subsection `Loading`. */
     static void declare_parameters(dealii::ParameterHandler &prm);
