@@ -317,6 +317,18 @@ add_test(NAME check/robust_stepping_collapse
     -P ${AUSROLL_CHECKS_DIR}/run_failure_check.cmake
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/robust_stepping_collapse)
 set_tests_properties(check/robust_stepping_collapse PROPERTIES LABELS check TIMEOUT 600)
+# The same with 20 cutbacks allowed and Loading/Minimum step fraction = 0.1: the run stops when a
+# further halving would go below a tenth of the nominal step (at dt = 0.0125), naming the entry,
+# with the same valid history.
+configure_file(${AUSROLL_CHECKS_DIR}/scenes/thick_cylinder_creep.prm.in ${CMAKE_CURRENT_BINARY_DIR}/thick_cylinder_creep.prm @ONLY)
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/robust_stepping_minimum_step)
+add_test(NAME check/robust_stepping_minimum_step
+  COMMAND ${CMAKE_COMMAND} -DRUN=$<TARGET_FILE:ausroll> -DPRM=${CMAKE_CURRENT_BINARY_DIR}/thick_cylinder_creep.prm
+    "-DCHECK=${Python3_EXECUTABLE};${AUSROLL_CHECKS_DIR}/check_failure.py"
+    "-DARGS=out;--expect-status;3;--expect-message;with dt = 0.0125, and half of it is below Loading/Minimum step fraction = 0.1;--max-column;pressure_0;192.09"
+    -P ${AUSROLL_CHECKS_DIR}/run_failure_check.cmake
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/robust_stepping_minimum_step)
+set_tests_properties(check/robust_stepping_minimum_step PROPERTIES LABELS check TIMEOUT 600)
 
 # ---------------------------------------------------------------- large deformation
 # Follower pressure (finite strain): plane-strain thick ring A = 100, B = 200, Hencky elastic,
