@@ -65,8 +65,7 @@ namespace ausroll::contact
         "such a boundary crossed into the die (by more than 1 % of the smallest cell), the "
         "boundary becomes a candidate of the die, the run says so, and the step is solved again "
         "from its start; warn: only warn, results from then on are not those of the forming "
-        "process. Boundaries with prescribed displacements are only warned about. 2D only "
-        "(3D runs do not check).");
+        "process. Boundaries with prescribed displacements are only warned about.");
     for (unsigned int k = 0; k < max_dies; ++k)
     {
       prm.enter_subsection("Die " + std::to_string(k));

@@ -81,7 +81,6 @@ namespace ausroll::contact
                                               const double                         tolerance,
                                               const MPI_Comm                       comm) const
   {
-    static_assert(dim == 2, "the contact code is 2D");
     double       depth = tolerance;
     int          die = -1;
     BoundaryNode deepest;
@@ -94,8 +93,8 @@ namespace ausroll::contact
           candidate = candidate || d.is_candidate(id);
         if (candidate)
           continue;
-        Point<2> x;
-        for (unsigned int c = 0; c < 2; ++c)
+        Point<dim> x;
+        for (unsigned int c = 0; c < dim; ++c)
           x[c] = n.X[c] + u[n.dofs[c]];
         const DieProjection<dim> p = d.project(x, time);
         if (!p.valid || -p.gap <= depth)
@@ -103,8 +102,8 @@ namespace ausroll::contact
         if (t_start >= 0.)
         {
           // only nodes outside the die at the start of the step
-          Point<2> x0;
-          for (unsigned int c = 0; c < 2; ++c)
+          Point<dim> x0;
+          for (unsigned int c = 0; c < dim; ++c)
             x0[c] = n.X[c] + u_start[n.dofs[c]];
           const DieProjection<dim> p0 = d.project(x0, t_start);
           if (!p0.valid || p0.gap < -tolerance)
@@ -121,17 +120,19 @@ namespace ausroll::contact
     const auto  extremes = Utilities::MPI::min_max_avg(die >= 0 ? depth : 0., comm);
     if (extremes.max <= tolerance)
       return result;
-    const unsigned int    root = extremes.max_index;
-    std::array<double, 4> data{{double(die),
-                                double(deepest.boundary_ids.empty() ? 0 : deepest.boundary_ids[0]),
-                                deepest.X[0],
-                                deepest.X[1]}};
+    const unsigned int          root = extremes.max_index;
+    std::array<double, 2 + dim> data;
+    data[0] = die;
+    data[1] = deepest.boundary_ids.empty() ? 0 : deepest.boundary_ids[0];
+    for (unsigned int c = 0; c < dim; ++c)
+      data[2 + c] = deepest.X[c];
     data = Utilities::MPI::broadcast(comm, data, root);
     result.found = true;
     result.die = static_cast<unsigned int>(data[0]);
     result.boundary = static_cast<unsigned int>(data[1]);
     result.depth = extremes.max;
-    result.X = Point<dim>(data[2], data[3]);
+    for (unsigned int c = 0; c < dim; ++c)
+      result.X[c] = data[2 + c];
     return result;
   }
 
@@ -143,7 +144,7 @@ namespace ausroll::contact
   {
     std::ostringstream msg;
     msg << "boundary " << p.boundary << " of the workpiece passes through die " << p.die << " '"
-        << die_name << "' by " << p.depth << " mm at the node (" << p.X[0] << " " << p.X[1]
+        << die_name << "' by " << p.depth << " mm at the node (" << p.X
         << ") (reference coordinates) in step " << step << ", t = " << time
         << ": it is not among Contact/Die " << p.die << "/Candidate boundaries";
     return msg.str();
@@ -173,4 +174,5 @@ namespace ausroll::contact
   }
 
   template class NonCandidatePenetration<2>;
+  template class NonCandidatePenetration<3>;
 } // namespace ausroll::contact

@@ -113,13 +113,13 @@ namespace ausroll::scene
         system.mapping,
         [this](const Point<dim> &x) { return kinematics.volume_factor(x); },
         system.min_cell_diameter);
-    // The curvature tangent and the non-candidate penetration check are planar (2D only).
-    if constexpr (dim == 2)
-      if (contact.active())
-      {
+    if (contact.active())
+    {
+      // The curvature tangent is planar (2D only).
+      if constexpr (dim == 2)
         curved_die_tangent.setup(system.mapping, system.dof_handler);
-        non_candidate_penetration.setup(system.mapping, system.dof_handler);
-      }
+      non_candidate_penetration.setup(system.mapping, system.dof_handler);
+    }
   }
 
   template <int dim>
@@ -266,42 +266,38 @@ namespace ausroll::scene
   template <int dim>
   bool Scene<dim>::add_penetrating_boundaries()
   {
-    if constexpr (dim == 2)
-    {
-      if (!contact.active() || !parameters.contact.add_penetrating_boundaries)
+    if (!contact.active() || !parameters.contact.add_penetrating_boundaries)
+      return false;
+    const auto p = non_candidate_penetration.find_crossing(contact,
+                                                           system.solution_ghosted,
+                                                           time,
+                                                           system.step_start,
+                                                           step_start_time,
+                                                           1e-2 * system.min_cell_diameter,
+                                                           comm);
+    if (!p.found)
+      return false;
+    // A boundary with prescribed displacements (a symmetry axis, a clamp) is not made a
+    // contact candidate: its constraints would conflict; the warning of accept_step() names it.
+    for (const auto &c : parameters.boundary_conditions.conditions)
+      if (c.id == p.boundary
+          && (c.type == mechanics::BoundaryConditionType::fixed
+              || c.type == mechanics::BoundaryConditionType::displacement))
         return false;
-      const auto p = non_candidate_penetration.find_crossing(contact,
-                                                             system.solution_ghosted,
-                                                             time,
-                                                             system.step_start,
-                                                             step_start_time,
-                                                             1e-2 * system.min_cell_diameter,
-                                                             comm);
-      if (!p.found)
-        return false;
-      // A boundary with prescribed displacements (a symmetry axis, a clamp) is not made a
-      // contact candidate: its constraints would conflict; the warning of accept_step() names it.
-      for (const auto &c : parameters.boundary_conditions.conditions)
-        if (c.id == p.boundary
-            && (c.type == mechanics::BoundaryConditionType::fixed
-                || c.type == mechanics::BoundaryConditionType::displacement))
-          return false;
-      log << "  note: "
-          << contact::NonCandidatePenetration<dim>::describe(
-                 p, contact.die(p.die).name, step_number + 1, time)
-          << "; it is now a candidate of that die (Contact/Penetrating boundaries = add), and the "
-             "step is solved again. Add "
-          << p.boundary << " to Contact/Die " << p.die
-          << "/Candidate boundaries to say so in the input" << std::endl;
-      // The committed statuses carry over to the new set of contact nodes by position.
-      const std::vector<double> state = contact.pack_state();
-      contact.add_candidate_boundary(p.die, p.boundary);
-      setup_dof_dependents();
-      contact.unpack_state(state);
-      contact_strategy->restart_step();
-      return true;
-    }
-    return false;
+    log << "  note: "
+        << contact::NonCandidatePenetration<dim>::describe(
+               p, contact.die(p.die).name, step_number + 1, time)
+        << "; it is now a candidate of that die (Contact/Penetrating boundaries = add), and the "
+           "step is solved again. Add "
+        << p.boundary << " to Contact/Die " << p.die
+        << "/Candidate boundaries to say so in the input" << std::endl;
+    // The committed statuses carry over to the new set of contact nodes by position.
+    const std::vector<double> state = contact.pack_state();
+    contact.add_candidate_boundary(p.die, p.boundary);
+    setup_dof_dependents();
+    contact.unpack_state(state);
+    contact_strategy->restart_step();
+    return true;
   }
 
   template <int dim>
@@ -351,20 +347,19 @@ namespace ausroll::scene
         }
 
     check_distortion();
-    if constexpr (dim == 2)
-      if (contact.active())
-      {
-        // a boundary that may not touch a die passes through it
-        const std::string penetration
-            = non_candidate_penetration.check(contact,
-                                              system.solution_ghosted,
-                                              step.time,
-                                              step_number,
-                                              1e-2 * system.min_cell_diameter,
-                                              comm);
-        if (!penetration.empty())
-          log << "  warning: " << penetration << std::endl;
-      }
+    if (contact.active())
+    {
+      // a boundary that may not touch a die passes through it
+      const std::string penetration
+          = non_candidate_penetration.check(contact,
+                                            system.solution_ghosted,
+                                            step.time,
+                                            step_number,
+                                            1e-2 * system.min_cell_diameter,
+                                            comm);
+      if (!penetration.empty())
+        log << "  warning: " << penetration << std::endl;
+    }
 
     const double t_end = parameters.loading.end_time;
     if (parameters.adaptivity.interval > 0 && step_number % parameters.adaptivity.interval == 0
