@@ -47,6 +47,7 @@ def main():
                               "Loading/Number of steps = 36", "Output/Directory = outa",
                               "Output/Write VTU = false", "Output/Verbosity = quiet"], check=True)
     subprocess.run(variant + ["a.prm", "b.prm", "Solver/Status pass tolerance = 1e-4",
+                              "Solver/Status pass gap tolerance = 1e-10",
                               "Solver/Residual tolerance = 1e-9", "Adaptivity/Interval = 4",
                               "Output/Directory = outb"], check=True)
     check = Checklist()
