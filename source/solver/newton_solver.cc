@@ -74,8 +74,10 @@ namespace ausroll::solver
       // Constraints that depend on the solution (nested active set) are updated once the
       // reactions are accurate to `Status pass tolerance` (1e-4) of the force level: the last
       // quadratic iterations of an intermediate pass would not change the statuses.
+      // A constraint gap below `Status pass gap tolerance` does not change the statuses either.
       const bool nearly_converged
-          = constraints_ok
+          = problem.constraint_violation() <= std::max(
+                constraint_tolerance, parameters.status_pass_gap_tolerance * problem.length_scale())
             && norm <= std::max(tolerance, parameters.status_pass_tolerance * reference)
             && it > pass_start;
       unsigned int changes = 0;

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -196,4 +197,76 @@ TEST(NewtonSolver, StatusPassToleranceJudgesConstraintsEarlierWithTheSameAnswer)
   EXPECT_TRUE(early.closed);
   EXPECT_NEAR(early.u, 1.5, 1e-14);
   EXPECT_NEAR(early.residual, -5.125, 1e-12);
+}
+
+namespace
+{
+  /**
+   * The stop problem with a second constraint gap that closes only geometrically, by a factor of
+   * 10 per Newton iteration whatever the residual (as the second-order gap d^2 / 2R a curved die
+   * leaves after each iteration closes with the slip increments): it starts at 0.1 and is below
+   * the convergence limit 1e-10 (length scale 1) only from the tenth iterate on, long after the
+   * free residual of f = 10 is below 0.1 of the force level.
+   */
+  class GapProblem : public StopProblem
+  {
+  public:
+    using StopProblem::StopProblem;
+    double constraint_violation() const override
+    {
+      return std::max(StopProblem::constraint_violation(), gap);
+    }
+    LinearSolveInfo solve_for_increment() override
+    {
+      next_gap = 0.1 * gap;
+      return StopProblem::solve_for_increment();
+    }
+    void apply_increment(const double step) override
+    {
+      StopProblem::apply_increment(step);
+      gap = next_gap;
+    }
+    unsigned int update_constraints_at_convergence(dealii::ConditionalOStream &log) override
+    {
+      if (updates == 0)
+        first_update_gap = gap;
+      return StopProblem::update_constraints_at_convergence(log);
+    }
+
+    double gap = 0.1, next_gap = 0.1;
+    double first_update_gap = -1.; ///< the gap at the first judgement of the stop
+  };
+} // namespace
+
+// `Solver/Status pass gap tolerance`: with the default (1e-10, the convergence limit of the
+// constraints) the stop is judged only once the gap has closed, at the tenth iterate although |r|
+// is below Status pass tolerance (0.1 of f) long before; with 1e-3 it is judged at an iterate
+// whose gap is still open (between 1e-10 and 1e-3). The last pass still converges the gap to
+// 1e-10, so both find the exact closed state (u = g, reaction -5.125), the looser one in fewer
+// iterations.
+TEST(NewtonSolver, StatusPassGapToleranceJudgesAtOpenGapsWithTheSameAnswer)
+{
+  dealii::ConditionalOStream log(std::cout, false);
+  SolverParameters           tight = parameters();
+  tight.status_pass_tolerance = 0.1;
+  SolverParameters loose = tight;
+  loose.status_pass_gap_tolerance = 1e-3;
+  GapProblem         early(10., 1.5, false);
+  const NewtonResult early_result = NewtonSolver(loose).solve(early, log);
+  GapProblem         late(10., 1.5, false);
+  const NewtonResult late_result = NewtonSolver(tight).solve(late, log);
+  ASSERT_TRUE(early_result.converged) << early_result.reason;
+  ASSERT_TRUE(late_result.converged) << late_result.reason;
+  EXPECT_LE(late.first_update_gap, 1e-10);
+  EXPECT_GT(early.first_update_gap, 1e-10);
+  EXPECT_LE(early.first_update_gap, 1e-3);
+  EXPECT_LE(early.first_update_residual, 0.1 * 10.);
+  EXPECT_LT(early_result.iterations, late_result.iterations);
+  for (const GapProblem *p : {&early, &late})
+  {
+    EXPECT_TRUE(p->closed);
+    EXPECT_LE(p->gap, 1e-10); // converged constraints
+    EXPECT_NEAR(p->u, 1.5, 1e-14);
+    EXPECT_NEAR(p->residual, -5.125, 1e-12);
+  }
 }

@@ -53,7 +53,10 @@ namespace ausroll::solver
     double       divergence_factor = 1e6;    ///< `Divergence factor`: abort when |r| grows by it
     /** `Status pass tolerance`: constraints that depend on the solution (nested active set) are
         judged once |r| is below this fraction of the force level (or converged). */
-    double                 status_pass_tolerance = 1e-4;
+    double status_pass_tolerance = 1e-4;
+    /** `Status pass gap tolerance`: the largest constraint gap (relative to the smallest cell
+        diameter) of an iterate that the status pass may judge; convergence still needs 1e-10. */
+    double                 status_pass_gap_tolerance = 1e-10;
     bool                   line_search = true; ///< `Line search`
     LinearSolverParameters linear;             ///< subsection `Linear solver`
 
