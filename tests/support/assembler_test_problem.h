@@ -92,7 +92,7 @@ namespace ausroll::test_support
   {
     mechanics::RowTransforms<2>     transforms;
     mechanics::NodalRowTransform<2> t;
-    t.dofs = {0, 1};
+    t.dofs = {{0, 1}};
     t.matrix[0][0] = t.matrix[1][1] = 1.;
     t.matrix[0][1] = 0.3;
     t.offset[0] = 2.5;
