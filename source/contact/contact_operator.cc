@@ -23,9 +23,6 @@ namespace ausroll::contact
   namespace
   {
     constexpr double infinity = std::numeric_limits<double>::infinity();
-    /** 3D, nested active set: cosine of the largest turn of a followed slip direction between
-        two iterates (30 degrees); a larger swing holds the direction again (update_geometry()). */
-    constexpr double swing_cosine = 0.8660254037844386;
 
     /** Magnitude of tangential components (2D: |R_t| as before; 3D: the Euclidean norm). */
     template <std::size_t n>
@@ -217,29 +214,7 @@ namespace ausroll::contact
       if constexpr (dim == 3)
         if (n.current.status == ContactStatus::slip)
         {
-          const std::array<double, dim - 1> previous = n.current.direction;
           n.turned = update_slip_direction(n, !hold_changed || n.follow) > direction_tolerance;
-          // Nested active set: a followed direction that swings by more than 30 degrees between
-          // two iterates is held again (its previous direction, no derivative) for the rest of
-          // the pass and judged at the converged state as a held node (a turn there is one more
-          // pass, a reversal sticks it), so that every converged state keeps d = s / |s|. The
-          // linearisation T (P - d (x) d) / |s| of d = s / |s| holds for turns small against 1;
-          // slips of one or two slip_length at the flat die's side-face edge swung by 60-100
-          // degrees an iterate, across slip_length and back, and Newton cycled
-          // (doc/scenes/disk_rolling_3d.md, "Flat die: the cutbacks").
-          if (hold_changed && n.follow && n.turned)
-          {
-            double cosine = 0.;
-            for (unsigned int a = 0; a < dim - 1; ++a)
-              cosine += previous[a] * n.current.direction[a];
-            if (cosine < swing_cosine)
-            {
-              n.current.direction = previous;
-              n.followed_slip = 0.;
-              n.turned = false;
-              n.follow = false;
-            }
-          }
         }
       if (n.current.status != ContactStatus::open)
         ++closed;

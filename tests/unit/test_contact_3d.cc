@@ -265,9 +265,6 @@ namespace
       return error / largest;
     }
 
-    /** The time of the next assemble() (for calls outside run()). */
-    void set_time(const double t) { time = t; }
-
     std::unique_ptr<contact::ContactOperator<dim>> contact;
     /** Add ContactOperator::add_slip_direction_tangent() to the tangent (as the scene does). */
     bool direction_tangent = true;
@@ -575,95 +572,5 @@ TEST(Contact3d, SlipDirectionTangentMatchesFiniteDifferences)
       EXPECT_GT(without, 1e-3) << strategy;
     else
       EXPECT_LT(without, 1e-6) << strategy;
-  }
-}
-
-// A followed slip direction that swings by more than 30 degrees between two iterates is held
-// again (ContactOperator::update_geometry(); the flat die's cutbacks, doc/scenes/disk_rolling_3d.md
-// "Flat die: the cutbacks"), a smaller swing is followed, and the converged state turns a held
-// node to d = s / |s|. The oblique slide (nested active set) in full slip at t = 4; then, at the
-// converged u of t = 4 (the block does not move, so every bottom node slips by exactly minus the
-// die's motion since t = 4 and the die's tangential force is mu F_n along the die's motion):
-// t = 4.25 the die has moved 0.02 (4 slip_length) along e_1 (40 degrees, 10 degrees from the
-// slide): the held direction of the last step is judged at the "converged" state and turns to
-// e_1 (every slipping node, from then on followed); t = 4.5 the die has moved on by b along
-// e_2 (130 degrees): the direction of the slip turns by atan(b / 0.02), 45 degrees (b = 0.02:
-// held, the force stays along e_1) or 11.3 degrees (b = 0.004: followed, the force along the
-// slip). At the converged state of t = 4.5 the held direction turns to the slip (one more pass),
-// the followed one is there already; then the force is along the slip in both. Exact references
-// (unit vectors of the imposed die motion), 1e-9.
-TEST(Contact3d, FollowedSlipDirectionHeldAgainWhenItSwings)
-{
-  const double       a = 0.02, phi = 40. * M_PI / 180.;
-  const Tensor<1, 3> e1({std::cos(phi), std::sin(phi), 0.}),
-      e2({-std::sin(phi), std::cos(phi), 0.});
-  for (const double b : {0.02, 0.004})
-  {
-    // the slide of slide_translation(30) up to t = 4, then a e_1 and b e_2
-    const double      c = std::cos(M_PI / 6.), s = std::sin(M_PI / 6.);
-    const std::string along = "(0.0006 * min(max(t - 1, 0), 1) + 0.04 * min(max(t - 2, 0), 2))";
-    char              text[1024];
-    std::snprintf(text,
-                  sizeof(text),
-                  "%.17g * %s + %.17g * min(max(t - 4, 0) * 4, 1) + %.17g * min(max(t - 4.25, 0) "
-                  "* 4, 1); %.17g * %s + %.17g * min(max(t - 4, 0) * 4, 1) + %.17g * min(max(t - "
-                  "4.25, 0) * 4, 1); %g * min(t, 1)",
-                  c,
-                  along.c_str(),
-                  a * e1[0],
-                  b * e2[0],
-                  s,
-                  along.c_str(),
-                  a * e1[1],
-                  b * e2[1],
-                  delta);
-    BlockOnDie<3> block(block_mesh, plane_die("nested active set", text), held_top, 5);
-    const auto    records = block.run(0.25, 4.);
-    ASSERT_FALSE(records.empty());
-    const unsigned int n_slip = records.back().n_slip;
-    ASSERT_EQ(records.back().n_stick, 0u);
-    ASSERT_GT(n_slip, 0u);
-
-    ConditionalOStream log(std::cout, false);
-    std::string        message;
-    // unit tangential force of the die on the block, and |F_T| / (mu F_n)
-    const auto direction = [&block]()
-    {
-      const Tensor<1, 3> f = block.contact->die_contact(0).force;
-      const Tensor<1, 3> ft({f[0], f[1], 0.});
-      return std::make_pair(ft / ft.norm(), ft.norm() / (mu * std::abs(f[2])));
-    };
-
-    block.set_time(4.25);
-    ASSERT_TRUE(block.assemble(true, message)) << message;
-    EXPECT_EQ(block.update_constraints_at_convergence(log), n_slip); // held -> e_1: a turn
-    ASSERT_TRUE(block.assemble(true, message)) << message;
-    auto [d1, ratio1] = direction();
-    EXPECT_NEAR((d1 - e1).norm(), 0., 1e-9);
-    EXPECT_NEAR(ratio1, 1., 1e-9);
-
-    block.set_time(4.5);
-    ASSERT_TRUE(block.assemble(true, message)) << message;
-    const Tensor<1, 3> slip = (a * e1 + b * e2) / (a * e1 + b * e2).norm();
-    auto [d2, ratio2] = direction();
-    const double swing = std::atan2(b, a) * 180. / M_PI;
-    std::printf(
-        "[ contact3d ] swing %.1f degrees: force %.1f degrees from e_1, %.1f from the slip\n",
-        swing,
-        std::acos(std::min(1., d2 * e1)) * 180. / M_PI,
-        std::acos(std::min(1., d2 * slip)) * 180. / M_PI);
-    if (swing > 30.)
-      EXPECT_NEAR((d2 - e1).norm(), 0., 1e-9) << "swing " << swing; // held again
-    else
-      EXPECT_NEAR((d2 - slip).norm(), 0., 1e-9) << "swing " << swing; // followed
-    EXPECT_NEAR(ratio2, 1., 1e-9);
-    // the converged state: a held node turns to the slip (one more pass, a change of each
-    // slipping node); a followed one has d = s / |s| already (no change)
-    EXPECT_EQ(block.update_constraints_at_convergence(log), swing > 30. ? n_slip : 0u)
-        << "swing " << swing;
-    ASSERT_TRUE(block.assemble(true, message)) << message;
-    auto [d3, ratio3] = direction();
-    EXPECT_NEAR((d3 - slip).norm(), 0., 1e-9) << "swing " << swing;
-    EXPECT_NEAR(ratio3, 1., 1e-9);
   }
 }
