@@ -306,29 +306,33 @@ set_tests_properties(check/plot_field_script PROPERTIES LABELS check
   PASS_REGULAR_EXPRESSION "wrote plot_field.png")
 
 # ---------------------------------------------------------------- robust stepping
+# ausroll_add_collapse_check(NAME <name> PRM <configured prm> MESSAGE <expected text>): the run must
+# stop with exit status 3 and the message, and its history stays below the collapse pressure
+# 192.09 MPa (converged states only).
+function(ausroll_add_collapse_check)
+  cmake_parse_arguments(C "" "NAME;PRM;MESSAGE" "" ${ARGN})
+  file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/${C_NAME})
+  add_test(NAME check/${C_NAME}
+    COMMAND ${CMAKE_COMMAND} -DRUN=$<TARGET_FILE:ausroll> -DPRM=${C_PRM}
+      "-DCHECK=${Python3_EXECUTABLE};${AUSROLL_CHECKS_DIR}/check_failure.py"
+      "-DARGS=out;--expect-status;3;--expect-message;${C_MESSAGE};--max-column;pressure_0;192.09"
+      -P ${AUSROLL_CHECKS_DIR}/run_failure_check.cmake
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/${C_NAME})
+  set_tests_properties(check/${C_NAME} PROPERTIES LABELS check TIMEOUT 600)
+endfunction()
 configure_file(${AUSROLL_CHECKS_DIR}/scenes/thick_cylinder_collapse.prm.in ${CMAKE_CURRENT_BINARY_DIR}/thick_cylinder_collapse.prm @ONLY)
 # Beyond the collapse pressure (192.09 MPa) no step converges: cut back 3 times, stop with exit 3
 # and a message naming the step; history and solution.pvd stay valid with converged states only.
-file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/robust_stepping_collapse)
-add_test(NAME check/robust_stepping_collapse
-  COMMAND ${CMAKE_COMMAND} -DRUN=$<TARGET_FILE:ausroll> -DPRM=${CMAKE_CURRENT_BINARY_DIR}/thick_cylinder_collapse.prm
-    "-DCHECK=${Python3_EXECUTABLE};${AUSROLL_CHECKS_DIR}/check_failure.py"
-    "-DARGS=out;--expect-status;3;--expect-message;did not converge after 3 cutbacks;--max-column;pressure_0;192.09"
-    -P ${AUSROLL_CHECKS_DIR}/run_failure_check.cmake
-  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/robust_stepping_collapse)
-set_tests_properties(check/robust_stepping_collapse PROPERTIES LABELS check TIMEOUT 600)
+ausroll_add_collapse_check(NAME robust_stepping_collapse
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/thick_cylinder_collapse.prm
+  MESSAGE "did not converge after 3 cutbacks")
 # The same with 20 cutbacks allowed and Loading/Minimum step fraction = 0.1: the run stops when a
 # further halving would go below a tenth of the nominal step (at dt = 0.0125), naming the entry,
 # with the same valid history.
 configure_file(${AUSROLL_CHECKS_DIR}/scenes/thick_cylinder_creep.prm.in ${CMAKE_CURRENT_BINARY_DIR}/thick_cylinder_creep.prm @ONLY)
-file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/robust_stepping_minimum_step)
-add_test(NAME check/robust_stepping_minimum_step
-  COMMAND ${CMAKE_COMMAND} -DRUN=$<TARGET_FILE:ausroll> -DPRM=${CMAKE_CURRENT_BINARY_DIR}/thick_cylinder_creep.prm
-    "-DCHECK=${Python3_EXECUTABLE};${AUSROLL_CHECKS_DIR}/check_failure.py"
-    "-DARGS=out;--expect-status;3;--expect-message;with dt = 0.0125, and half of it is below Loading/Minimum step fraction = 0.1;--max-column;pressure_0;192.09"
-    -P ${AUSROLL_CHECKS_DIR}/run_failure_check.cmake
-  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/robust_stepping_minimum_step)
-set_tests_properties(check/robust_stepping_minimum_step PROPERTIES LABELS check TIMEOUT 600)
+ausroll_add_collapse_check(NAME robust_stepping_minimum_step
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/thick_cylinder_creep.prm
+  MESSAGE "with dt = 0.0125, and half of it is below Loading/Minimum step fraction = 0.1")
 
 # ---------------------------------------------------------------- large deformation
 # Follower pressure (finite strain): plane-strain thick ring A = 100, B = 200, Hencky elastic,
