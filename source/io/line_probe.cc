@@ -2,6 +2,7 @@
 #include <ausroll/core/gather_rows.h>
 #include <ausroll/core/parse_utilities.h>
 #include <ausroll/io/line_probe.h>
+#include <ausroll/io/owned_cell_around_point.h>
 
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
@@ -65,19 +66,11 @@ namespace ausroll::io
       {
         Sample &s = probe.samples[i];
         s.local = false;
-        try
+        if (const auto found = owned_cell_around_point(mapping, dof_handler, s.position))
         {
-          const auto found
-              = GridTools::find_active_cell_around_point(mapping, dof_handler, s.position);
-          if (found.first.state() == IteratorState::valid && found.first->is_locally_owned())
-          {
-            s.cell = found.first;
-            s.unit_point = GeometryInfo<dim>::project_to_unit_cell(found.second);
-            owner[i] = rank;
-          }
-        }
-        catch (...)
-        {
+          s.cell = found->first;
+          s.unit_point = found->second;
+          owner[i] = rank;
         }
       }
       {

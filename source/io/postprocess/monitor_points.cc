@@ -1,5 +1,6 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/core/parse_utilities.h>
+#include <ausroll/io/owned_cell_around_point.h>
 #include <ausroll/io/postprocess/monitor_points.h>
 
 #include <deal.II/base/mpi.h>
@@ -33,19 +34,11 @@ namespace ausroll::io::postprocess
       m.name = name;
       m.position = position;
       unsigned int found_rank = n_ranks;
-      try
+      if (const auto found = owned_cell_around_point(input.mapping, input.dof_handler, position))
       {
-        const auto found
-            = GridTools::find_active_cell_around_point(input.mapping, input.dof_handler, position);
-        if (found.first.state() == IteratorState::valid && found.first->is_locally_owned())
-        {
-          m.cell = found.first;
-          m.unit_point = GeometryInfo<dim>::project_to_unit_cell(found.second);
-          found_rank = rank;
-        }
-      }
-      catch (...)
-      {
+        m.cell = found->first;
+        m.unit_point = found->second;
+        found_rank = rank;
       }
       const unsigned int owner = Utilities::MPI::min(found_rank, comm);
       if (owner == n_ranks)
