@@ -2,11 +2,15 @@
 #include <ausroll/mechanics/assembler.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
+
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_FEVector.h>
 
 #include <algorithm>
 #include <cstring>
@@ -35,6 +39,9 @@ namespace ausroll::mechanics
       , locking(locking)
   {
   }
+
+  template <int dim>
+  Assembler<dim>::~Assembler() = default;
 
   namespace
   {
@@ -89,6 +96,11 @@ namespace ausroll::mechanics
     AssemblyCache *cache = nullptr;
     bool           reuse = false;
     bool           store = false;
+    // the slot tables of the matrix (AssemblyCache::slot_rows) and the local values of the
+    // target vectors (same map), or nullptr
+    const AssemblyCache *slots = nullptr;
+    double *residual_values = nullptr, *external_values = nullptr, *free_values = nullptr,
+           *rhs_values = nullptr;
 
     // flags
     bool need_matrix = false;
@@ -278,6 +290,7 @@ namespace ausroll::mechanics
     FullMatrix<double>                   cell_matrix;
     Vector<double>                       cell_residual, cell_external, cell_free;
     std::vector<types::global_dof_index> dofs;
+    std::size_t                          cell_index = 0; // active cell index
     bool                                 ok = true;
     double                               min_jacobian = 1e300;
     std::string                          message;
@@ -565,7 +578,8 @@ namespace ausroll::mechanics
         for (unsigned int c = 0; c < dim; ++c)
           for (unsigned int I = 0; I < dim; ++I)
           {
-            double sum = A[c][I][2][2] * hoop[j];
+            // (the hoop entry only where there is one: plane models skip its zero products)
+            double sum = axisymmetric ? A[c][I][2][2] * hoop[j] : 0.;
             for (unsigned int J = 0; J < dim; ++J)
               sum += A[c][I][cj][J] * g[j][J];
             h[j][c][I] = sum;
@@ -582,13 +596,23 @@ namespace ausroll::mechanics
       for (unsigned int i = 0; i < n_dofs; ++i)
       {
         const unsigned int c = component[i];
-        for (unsigned int j = 0; j < n_dofs; ++j)
-        {
-          double sum = hoop[i] * h_hoop[j];
-          for (unsigned int I = 0; I < dim; ++I)
-            sum += g[i][I] * h[j][c][I];
-          cell_matrix(i, j) += sum * material_factor;
-        }
+        double *const      row = &cell_matrix(i, 0);
+        if (axisymmetric)
+          for (unsigned int j = 0; j < n_dofs; ++j)
+          {
+            double sum = hoop[i] * h_hoop[j];
+            for (unsigned int I = 0; I < dim; ++I)
+              sum += g[i][I] * h[j][c][I];
+            row[j] += sum * material_factor;
+          }
+        else
+          for (unsigned int j = 0; j < n_dofs; ++j)
+          {
+            double sum = 0.;
+            for (unsigned int I = 0; I < dim; ++I)
+              sum += g[i][I] * h[j][c][I];
+            row[j] += sum * material_factor;
+          }
       }
 
       if (f_bar)
@@ -769,6 +793,39 @@ namespace ausroll::mechanics
       return;
     }
     const AssemblyTargets &targets = *setup.targets;
+    if (setup.slots != nullptr)
+    {
+      // A cell without constrained DoFs whose rows are all owned here: its entries straight into
+      // the value arrays of the vectors and the matrix (what distribute_local_to_global adds for
+      // such a cell, one sum per entry in the same cell order, without its row sorting and
+      // Epetra's searches).
+      const AssemblyCache &slots = *setup.slots;
+      const std::size_t    n = setup.n_dofs;
+      const std::size_t    base = copy.cell_index * n;
+      bool                 direct = slots.slot_rows[base] != nullptr;
+      for (unsigned int i = 0; direct && i < n; ++i)
+        direct = !setup.newton->is_constrained(copy.dofs[i]);
+      if (direct)
+      {
+        for (unsigned int i = 0; i < n; ++i)
+        {
+          const std::int32_t k = slots.slot_rhs[base + i];
+          setup.residual_values[k] += copy.cell_residual(i);
+          setup.external_values[k] += copy.cell_external(i);
+          if (setup.free_values != nullptr)
+            setup.free_values[k] += copy.cell_free(i);
+          if (!setup.need_matrix)
+            continue;
+          double *const             row = slots.slot_rows[base + i];
+          const std::int32_t *const position = &slots.slot_columns[(base + i) * n];
+          const double *const       local = &copy.cell_matrix(i, 0);
+          for (unsigned int j = 0; j < n; ++j)
+            row[position[j]] += local[j];
+          setup.rhs_values[k] += -copy.cell_free(i);
+        }
+        return;
+      }
+    }
     setup.hanging->distribute_local_to_global(copy.cell_residual, copy.dofs, *targets.residual);
     setup.hanging->distribute_local_to_global(
         copy.cell_external, copy.dofs, *targets.external_force);
@@ -828,6 +885,7 @@ namespace ausroll::mechanics
     cell->get_dof_indices(copy.dofs);
     const std::size_t n_dofs = setup.n_dofs;
     const std::size_t index = cell->active_cell_index();
+    copy.cell_index = index;
     if (setup.reuse)
     {
       // the cell part of the cached assembly at this very state (AssemblyCache)
@@ -908,18 +966,39 @@ namespace ausroll::mechanics
       setup.point_table = cache->points.data();
     }
 
+    prepare_slots(dof_handler, cache, setup);
+
     // The cell loop on the threads of DEAL_II_NUM_THREADS (step-44): the worker fills one cell's
-    // CopyData, the copier adds it to the targets in cell order.
-    using CellFilter = FilteredIterator<typename DoFHandler<dim>::active_cell_iterator>;
-    WorkStream::run(
-        CellFilter(IteratorFilters::LocallyOwnedCell(), dof_handler.begin_active()),
-        CellFilter(IteratorFilters::LocallyOwnedCell(), dof_handler.end()),
-        [this, &setup](const typename DoFHandler<dim>::active_cell_iterator &cell,
-                       ScratchData                                          &scratch,
-                       CopyData &copy) { assemble_one_cell(cell, setup, scratch, copy); },
-        [this, &setup](const CopyData &copy) { copy_local_to_global(copy, setup); },
-        ScratchData(mapping, fe, cell_quadrature, face_quadrature),
-        CopyData(setup.n_dofs));
+    // CopyData, the copier adds it to the targets in cell order. On one thread the same in a
+    // plain loop with the kept scratch (what WorkStream does then, without building the scratch
+    // and its three FEValues anew for every assembly).
+    if (MultithreadInfo::n_threads() == 1)
+    {
+      if (!kept_scratch)
+      {
+        kept_scratch = std::make_unique<ScratchData>(mapping, fe, cell_quadrature, face_quadrature);
+        kept_copy = std::make_unique<CopyData>(setup.n_dofs);
+      }
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          assemble_one_cell(cell, setup, *kept_scratch, *kept_copy);
+          copy_local_to_global(*kept_copy, setup);
+        }
+    }
+    else
+    {
+      using CellFilter = FilteredIterator<typename DoFHandler<dim>::active_cell_iterator>;
+      WorkStream::run(
+          CellFilter(IteratorFilters::LocallyOwnedCell(), dof_handler.begin_active()),
+          CellFilter(IteratorFilters::LocallyOwnedCell(), dof_handler.end()),
+          [this, &setup](const typename DoFHandler<dim>::active_cell_iterator &cell,
+                         ScratchData                                          &scratch,
+                         CopyData &copy) { assemble_one_cell(cell, setup, scratch, copy); },
+          [this, &setup](const CopyData &copy) { copy_local_to_global(copy, setup); },
+          ScratchData(mapping, fe, cell_quadrature, face_quadrature),
+          CopyData(setup.n_dofs));
+    }
 
     add_row_transform_offsets(dof_handler, setup);
     if (setup.store)
@@ -998,6 +1077,105 @@ namespace ausroll::mechanics
     cache->residuals.resize(n_cells * n_dofs);
     cache->min_jacobian.resize(n_cells);
     cache->matrices.resize(setup.need_matrix ? n_cells * n_dofs * n_dofs : 0);
+  }
+
+  template <int dim>
+  void Assembler<dim>::prepare_slots(const DoFHandler<dim> &dof_handler,
+                                     AssemblyCache         *cache,
+                                     Setup                 &setup) const
+  {
+    if (cache == nullptr)
+      return;
+    const AssemblyTargets &targets = *setup.targets;
+    const std::size_t      n_cells = dof_handler.get_triangulation().n_active_cells();
+    const std::size_t      n = setup.n_dofs;
+    Epetra_FEVector       &residual = targets.residual->trilinos_vector();
+    // the target vectors share one map (their local indices are those of the table)
+    const auto same_map = [&](const TrilinosWrappers::MPI::Vector *v)
+    { return v == nullptr || v->trilinos_vector().Map().SameAs(residual.Map()); };
+    if (!same_map(targets.external_force) || !same_map(targets.free_residual)
+        || !same_map(targets.rhs))
+      return;
+    if (!setup.need_matrix)
+    {
+      // residual only: the tables of the last matrix assembly on this pattern, if any
+      if (!cache->slots_valid || cache->slots_pattern != cache->pattern
+          || cache->slot_rows.size() != n_cells * n)
+        return;
+      setup.slots = cache;
+      setup.residual_values = residual[0];
+      setup.external_values = targets.external_force->trilinos_vector()[0];
+      setup.free_values = targets.free_residual != nullptr
+                              ? targets.free_residual->trilinos_vector()[0]
+                              : nullptr;
+      return;
+    }
+    const Epetra_CrsMatrix &matrix = targets.matrix->trilinos_matrix();
+    Epetra_FEVector        &rhs = targets.rhs->trilinos_vector();
+    if (!cache->slots_valid || cache->slots_pattern != cache->pattern
+        || cache->slots_matrix != &matrix || cache->slot_rows.size() != n_cells * n)
+    {
+      cache->slots_valid = false;
+      cache->slot_rows = {};
+      cache->slot_columns = {};
+      cache->slot_rhs = {};
+      const std::size_t bytes
+          = n_cells * n * (sizeof(double *) + 2 * sizeof(std::int32_t) * (1 + n));
+      if (bytes > cache->max_bytes || !matrix.Filled())
+        return;
+      cache->slot_rows.assign(n_cells * n, nullptr);
+      cache->slot_columns.assign(n_cells * n * n, 0);
+      cache->slot_rhs.assign(n_cells * n, 0);
+      using IndexType = TrilinosWrappers::types::int_type;
+      std::vector<types::global_dof_index> dofs(n);
+      std::vector<int>                     columns(n);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          const std::size_t base = cell->active_cell_index() * n;
+          bool              found = true;
+          for (unsigned int j = 0; found && j < n; ++j)
+          {
+            columns[j] = matrix.ColMap().LID(static_cast<IndexType>(dofs[j]));
+            found = columns[j] >= 0;
+          }
+          for (unsigned int i = 0; found && i < n; ++i)
+          {
+            const int row = matrix.RowMap().LID(static_cast<IndexType>(dofs[i]));
+            const int rhs_row = rhs.Map().LID(static_cast<IndexType>(dofs[i]));
+            int       n_entries = 0;
+            double   *values = nullptr;
+            int      *indices = nullptr;
+            found = row >= 0 && rhs_row >= 0
+                    && matrix.ExtractMyRowView(row, n_entries, values, indices) == 0;
+            if (!found)
+              break;
+            cache->slot_rows[base + i] = values;
+            cache->slot_rhs[base + i] = rhs_row;
+            int *const end = indices + n_entries;
+            const bool sorted = std::is_sorted(indices, end);
+            for (unsigned int j = 0; found && j < n; ++j)
+            {
+              const int *const at = sorted ? std::lower_bound(indices, end, columns[j])
+                                           : std::find(indices, end, columns[j]);
+              found = at != end && *at == columns[j];
+              cache->slot_columns[(base + i) * n + j] = static_cast<std::int32_t>(at - indices);
+            }
+          }
+          if (!found)
+            std::fill_n(cache->slot_rows.begin() + base, n, nullptr); // deal.II's path
+        }
+      cache->slots_pattern = cache->pattern;
+      cache->slots_matrix = &matrix;
+      cache->slots_valid = true;
+    }
+    setup.slots = cache;
+    setup.residual_values = residual[0];
+    setup.external_values = targets.external_force->trilinos_vector()[0];
+    setup.free_values
+        = targets.free_residual != nullptr ? targets.free_residual->trilinos_vector()[0] : nullptr;
+    setup.rhs_values = rhs[0];
   }
 
   template <int dim>

@@ -32,6 +32,7 @@ namespace ausroll::mechanics
   void MechanicalSystem<dim>::setup_system()
   {
     ++assembly_cache.state;
+    ++assembly_cache.pattern; // a new matrix below
     dof_handler.distribute_dofs(fe);
     owned_dofs = dof_handler.locally_owned_dofs();
     relevant_dofs = DoFTools::extract_locally_relevant_dofs(dof_handler);

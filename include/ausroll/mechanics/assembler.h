@@ -22,6 +22,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace ausroll::mechanics
@@ -77,6 +78,22 @@ namespace ausroll::mechanics
     std::vector<material::MaterialPoint *> points;
     std::uint64_t                          points_state = 0;
     bool                                   points_valid = false;
+    /** The owner's counter of sparsity-pattern changes (a new matrix): the slot tables below
+        belong to one pattern. */
+    std::uint64_t pattern = 0;
+    /** Where each cell's matrix entries live in the matrix of @ref slots_pattern: for the cell of
+        active index c and local row i, slot_rows[c n + i] is the row's value array in the
+        Epetra matrix (nullptr: row not owned here, the cell takes deal.II's path) and
+        slot_columns[(c n + i) n + j] the position of column j in it. Cells without constrained
+        DoFs add their matrix and right-hand side there directly (the same sums in the same
+        order as AffineConstraints::distribute_local_to_global, without its sorting and
+        Epetra's row and column searches). */
+    std::vector<double *>     slot_rows;
+    std::vector<std::int32_t> slot_columns;
+    std::vector<std::int32_t> slot_rhs; ///< local index of each cell row in the rhs vector
+    std::uint64_t             slots_pattern = 0;
+    const void               *slots_matrix = nullptr;
+    bool                      slots_valid = false;
   };
 
   /** Outcome of an assembly, identical on all MPI ranks. */
@@ -142,6 +159,8 @@ namespace ausroll::mechanics
               const material::ConstitutiveModel &model,
               const BoundaryConditions<dim>     &boundary_conditions,
               const VolumetricLocking            locking = VolumetricLocking::none);
+
+    ~Assembler();
 
     /** The cell quadrature (material points live at its points). */
     const dealii::Quadrature<dim> &quadrature() const { return cell_quadrature; }
@@ -276,5 +295,16 @@ namespace ausroll::mechanics
     const material::ConstitutiveModel &model;
     const BoundaryConditions<dim>     &boundary_conditions;
     const VolumetricLocking            locking; ///< `Model/Volumetric locking treatment`
+
+    /** On one thread (DEAL_II_NUM_THREADS=1) the cells are assembled in a plain loop with this
+        scratch and copy, kept from call to call (WorkStream builds both anew per call). */
+    mutable std::unique_ptr<ScratchData> kept_scratch;
+    mutable std::unique_ptr<CopyData>    kept_copy;
+
+    /** Fill @p cache's slot tables for the matrix in @p targets when they are not those of its
+        current pattern (and fit into its max_bytes); sets setup.slots when they can be used. */
+    void prepare_slots(const dealii::DoFHandler<dim> &dof_handler,
+                       AssemblyCache                 *cache,
+                       Setup                         &setup) const;
   };
 } // namespace ausroll::mechanics
