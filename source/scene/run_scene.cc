@@ -4,6 +4,7 @@
 
 #include <exception>
 #include <memory>
+#include <string>
 
 namespace ausroll::scene
 {
@@ -21,6 +22,18 @@ namespace ausroll::scene
       if (!parameters.postprocess.boundary_profile.boundary_ids.empty())
         throw InputError("Postprocess/Boundary profile/Boundary ids" + why
                          + "leave it empty (no 3D profile yet)");
+      // The follower pressure (a pressure on the deformed surface) is planar; with small-strain
+      // kinematics a pressure is a dead load on the reference surface and works in 3D.
+      const auto &conditions = parameters.boundary_conditions.conditions;
+      if (parameters.model.kinematics != material::KinematicsType::small_strain)
+        for (unsigned int i = 0; i < conditions.size(); ++i)
+          if (conditions[i].type == mechanics::BoundaryConditionType::pressure)
+            throw InputError("Boundary conditions/Condition " + std::to_string(i)
+                             + "/Type = pressure: a follower pressure (on the deformed surface, "
+                               "Model/Kinematics other than 'small strain')"
+                             + why
+                             + "use Type = traction (a dead load per reference area) or "
+                               "Model/Kinematics = small strain");
     }
 
     template <int dim>
