@@ -5,7 +5,7 @@
 #  gear_rolling (prm/gear_rolling.prm, the resolved trailing scene): residual d_n along the flank (max-norm on the
 #    common radius grid), peak die force, die force at t = 0.6, peak contact pressure, plastic-zone
 #    depth (eps_p > 0.2 %).
-#  disk_rolling (prm/disk_rolling.prm): the 15 degree ring refined to 15 / 2^level degrees
+#  disk_rolling (prm/disk_rolling_quick.prm): the 15 degree ring refined to 15 / 2^level degrees
 #    in the 12 mm band, radially likewise; steps = rolling steps per revolution (Coulomb mu = 0.3); mean
 #    die force over 60-300 degrees of revolution, residual lobe (max) and trough (min) of the rim,
 #    and the residual rim in the max-norm on the common angle grid.
@@ -28,7 +28,7 @@ case "$SCENE" in
       --profile "d_n=residual_dn.csv:R:d_n")
     PLOT=gear_work_precision.png ;;
   disk_rolling)
-    PRM=prm/disk_rolling.prm
+    PRM=prm/disk_rolling_quick.prm
     DEFAULTS=("1 2 3" "144 288 576" 2)
     SCENE_OPTIONS=(
       --step-set "Loading/End time = {n + 8}" --step-set "Loading/Number of steps = {n + 8}"

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Short disk rolling check (tests/checks/scenes/disk_rolling_short.prm: prm/disk_rolling.prm on
+"""Short disk rolling check (tests/checks/scenes/disk_rolling_short.prm: prm/disk_rolling_quick.prm on
 the coarse 24 x 2 Q2 ring, feed 0.762 mm in 4 steps, then 20 degrees of rolling in 1.25 degree
 steps), run with the shipped nested active set and again with the load-increment ratio.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Short pass of the resolved disk scene (prm/disk_rolling_resolved.prm: graded contact band to
+"""Short pass of the resolved disk scene (prm/disk_rolling.prm: graded contact band to
 level 3, 0.625 degree steps, and its four speed settings Solver/Status pass tolerance = 6e-2,
 Solver/Status pass gap tolerance = 1e-6, Solver/Residual tolerance = 1e-7, Adaptivity/Interval =
 8): feed 0.762 mm in 4 steps, then 20 degrees of rolling (32 steps), run as shipped (A) and again
@@ -45,7 +45,7 @@ def run(ausroll, prm, directory):
 def main():
     ausroll, source = sys.argv[1], sys.argv[2]
     variant = [sys.executable, os.path.join(source, "scripts", "prm_variant.py")]
-    shipped = os.path.join(source, "prm", "disk_rolling_resolved.prm")
+    shipped = os.path.join(source, "prm", "disk_rolling.prm")
     subprocess.run(variant + [shipped, "a.prm", "Loading/End time = 36",
                               "Loading/Number of steps = 36", "Output/Directory = outa",
                               "Output/Write VTU = false", "Output/Verbosity = quiet"], check=True)

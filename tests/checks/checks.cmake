@@ -545,7 +545,7 @@ ausroll_add_script_check(NAME ring_boundary_profile
 # 5 % at every step, 2 % in the mean (measured 3.0 %, +0.4 %). About 3 s CPU.
 ausroll_add_script_check(NAME disk_rolling_short SCRIPT ${AUSROLL_CHECKS_DIR}/check_disk_rolling.py)
 
-# Resolved disk scene (prm/disk_rolling_resolved.prm), feed + 20 degrees: its speed settings
+# Resolved disk scene (prm/disk_rolling.prm), feed + 20 degrees: its speed settings
 # (Status pass tolerance 3e-2, Residual tolerance 1e-7, Interval 8) against the tight defaults,
 # |F| within 1 % per step and 0.2 % in the mean (measured 0.37 %, +0.06 %), plus force sign,
 # slab/Prandtl bracket and Coulomb bound (check_disk_rolling_resolved.py). About 6 s CPU.
