@@ -16,12 +16,23 @@ fi
 ausroll_install_missing
 ausroll_build
 
+# Run, keep what ausroll prints, and take the output directory from its closing line
+# ("finished: ... history: DIR/history.csv"), which knows the includes and --set overrides.
+log="$(mktemp)"
+trap 'rm -f "$log"' EXIT
+set +e
 if [ "${NP:-1}" -gt 1 ]; then
-  mpirun -np "$NP" "$BUILD_DIR/ausroll" "$prm" "${options[@]}"
+  mpirun -np "$NP" "$BUILD_DIR/ausroll" "$prm" "${options[@]}" | tee "$log"
 else
-  "$BUILD_DIR/ausroll" "$prm" "${options[@]}"
+  "$BUILD_DIR/ausroll" "$prm" "${options[@]}" | tee "$log"
 fi
+status=${PIPESTATUS[0]}
+set -e
 
-dir=$(sed -n 's/^[[:space:]]*set[[:space:]]\+Directory[[:space:]]*=[[:space:]]*\([^#]*\).*/\1/p' "$prm" | tail -n 1 | xargs)
-echo
-echo "Output of $(basename "$prm") is in $(pwd)/${dir:-output}/ (history.csv; open solution.pvd in ParaView)."
+dir=$(sed -n 's/^finished: .*; history: \(.*\)\/history\.csv.*/\1/p' "$log" | tail -n 1)
+if [ -n "$dir" ]; then
+  case "$dir" in /*) ;; *) dir="$(pwd)/$dir" ;; esac
+  echo
+  echo "Output of $(basename "$prm") is in $dir/ (history.csv; open solution.pvd in ParaView)."
+fi
+exit "$status"
