@@ -148,7 +148,17 @@ namespace ausroll::solver
       const bool nearly_met = problem.backtrack_with_small_constraint_gaps()
                               && problem.constraint_violation() <= std::max(
                                      constraint_tolerance, 1e-3 * problem.length_scale());
-      const LinearSolveInfo info = problem.solve_for_increment();
+      LinearSolveInfo info;
+      try
+      {
+        info = problem.solve_for_increment();
+      }
+      catch (const IterativeSolveFailure &e)
+      {
+        // a failed attempt like a Newton iteration that does not converge: the step is cut back
+        result.reason = e.what();
+        return result;
+      }
       result.linear_iterations += info.iterations;
       log << "    linear solve: " << info.iterations << " iterations, " << std::fixed
           << std::setprecision(3) << info.seconds << " s wall, " << info.cpu_seconds << " s CPU"

@@ -270,3 +270,37 @@ TEST(NewtonSolver, StatusPassGapToleranceJudgesAtOpenGapsWithTheSameAnswer)
     EXPECT_NEAR(p->residual, -5.125, 1e-12);
   }
 }
+
+namespace
+{
+  /** The stop problem whose linear solve fails (as an iterative solve that does not converge)
+      at the second iteration. */
+  class FailingSolveProblem : public StopProblem
+  {
+  public:
+    using StopProblem::StopProblem;
+    LinearSolveInfo solve_for_increment() override
+    {
+      if (++solves == 2)
+        throw IterativeSolveFailure("linear solver failed: the iterative solve did not converge");
+      return StopProblem::solve_for_increment();
+    }
+    unsigned int solves = 0;
+  };
+} // namespace
+
+// An iterative linear solve that fails inside a Newton step ends that attempt like a Newton
+// iteration that does not converge (not converged, with the solver's message as the reason), so
+// that the load stepper cuts the step back instead of ending the run; the solve is counted only
+// when it succeeded. Any other RunFailure still passes through.
+TEST(NewtonSolver, IterativeSolveFailureIsAFailedAttemptNotAnError)
+{
+  FailingSolveProblem problem(10., 100., false);
+  NewtonResult        result;
+  ASSERT_NO_THROW(result = solve(problem));
+  EXPECT_FALSE(result.converged);
+  EXPECT_NE(result.reason.find("iterative solve did not converge"), std::string::npos)
+      << result.reason;
+  EXPECT_EQ(result.iterations, 1u);
+  EXPECT_EQ(problem.solves, 2u);
+}

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <ausroll/core/exceptions.h>
 #include <ausroll/solver/solver_parameters.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -22,6 +23,21 @@
 namespace ausroll::solver
 {
   /** What one linear solve did. */
+  /**
+   * An iterative solve (`Solver/Linear solver/Type = iterative`, or `automatic` above its size
+   * limit) that did not reach `Relative tolerance`: the Krylov method stopped at `Maximum
+   * iterations`, or its true residual |b - A x| stayed above 100 x the tolerance. It is a
+   * RunFailure (a run stops with it outside a Newton step), but NewtonSolver::solve() treats it as
+   * a failed attempt of the step, as it treats a Newton iteration that does not converge: the
+   * load stepper cuts the step back. A Krylov method that fails on one iterate often does so
+   * because the iterate is bad (an element about to invert), which a shorter step avoids.
+   */
+  class IterativeSolveFailure : public RunFailure
+  {
+  public:
+    using RunFailure::RunFailure;
+  };
+
   struct LinearSolveInfo
   {
     unsigned int iterations = 0;     ///< Krylov iterations (0 for the direct solver)
