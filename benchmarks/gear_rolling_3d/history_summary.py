@@ -12,6 +12,11 @@ face). A partial history (a run stopped early) gives the same lines up to its la
 
 import argparse
 import csv
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+from convergence_study import interpolate  # noqa: E402 (the linear interpolation of the convergence tool)
 
 
 def main():
@@ -31,12 +36,7 @@ def main():
           f"cutbacks={sum(int(r['cutbacks']) for r in rows)} "
           f"peak_F_per_mm={F[i]:.6g} at t={t[i]:.6g}")
     for T in args.at:
-        value = float("nan")
-        for k in range(1, len(t)):
-            if t[k - 1] <= T <= t[k]:
-                w = (T - t[k - 1]) / (t[k] - t[k - 1])
-                value = (1 - w) * F[k - 1] + w * F[k]
-                break
+        value = interpolate(t, F, T) if t[0] <= T <= t[-1] else float("nan")
         print(f"F_per_mm(t={T:g})={value:.6g}")
     return 0
 
