@@ -87,6 +87,7 @@ def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("runs", nargs="+")
     p.add_argument("--csv", help="write the per-run table to this file")
+    p.add_argument("--plot", help="draw the lobe against the die start (in rim faces) per level into this PNG")
     args = p.parse_args(argv)
     runs = sorted((read_run(d) for d in args.runs), key=lambda r: (r["level"], r["shift"]))
     print(f"{'level':>5} {'shift':>9} {'CPU s':>7} {'F_mean':>9} {'lobe node':>10} {'at':>8} {'lobe face':>10} {'at':>8} {'trough':>9}")
@@ -107,7 +108,28 @@ def main(argv=None):
             w = csv.DictWriter(f, fieldnames=list(runs[0].keys()))
             w.writeheader()
             w.writerows(runs)
+    if args.plot:
+        plot(runs, args.plot)
     return 0
+
+
+def plot(runs, filename):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    for level in sorted({r["level"] for r in runs}):
+        group = [r for r in runs if r["level"] == level]
+        face = 15.0 / 2 ** level  # rim face of the 15-degree coarse ring at this level (degrees)
+        x = [r["shift"] / face for r in group]
+        ax.plot(x, [r["lobe_node"] for r in group], "o-", label=f"level {level} ({face:g}° faces)")
+    ax.set_xlabel("die start rotated by (fraction of a rim face of that level)")
+    ax.set_ylabel("residual lobe, largest u_r at the nodes (mm)")
+    ax.set_title("prm/disk_rolling.prm, 2304 rolling steps: lobe against where the die stops")
+    ax.grid(True, alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(filename, dpi=110)
 
 
 if __name__ == "__main__":
