@@ -6,14 +6,14 @@
 # (a face spans 15 / 2^level degrees), then benchmarks/convergence/disk_lobe_phase.py reads the lobe
 # at the nodes and as the maximum of the quadratic face traces, per run and per level.
 # Usage: benchmarks/convergence/disk_lobe_phase.sh [AUSROLL] [WORK] [LEVELS] [EIGHTHS]
-#   defaults: build/ausroll, /tmp/disk_lobe_phase, levels "2 3", eighths "0 1 2 3 4 6".
+#   defaults: build/ausroll, /tmp/disk_lobe_phase, levels "2 3", eighths "0 1 2 3 4 5 6 7" (a whole face).
 #   CPU per run (one core): about 45 s (level 2), 150 s (3), 700 s (4), 3500 s (5).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 AUSROLL="${1:-$ROOT/build/ausroll}"
 WORK="${2:-/tmp/disk_lobe_phase}"
 LEVELS="${3:-2 3}"
-EIGHTHS="${4:-0 1 2 3 4 6}"
+EIGHTHS="${4:-0 1 2 3 4 5 6 7}"
 n=2304
 mkdir -p "$WORK"
 dirs=()
