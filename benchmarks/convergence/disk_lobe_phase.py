@@ -22,7 +22,6 @@ Usage: disk_lobe_phase.py [--csv FILE] RUN_DIR...   (directory names end in L<le
 """
 import argparse
 import csv
-import glob
 import os
 import re
 import statistics
@@ -30,14 +29,6 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
 import convergence_study as cs  # noqa: E402
-
-
-def last_profile(directory):
-    files = sorted(glob.glob(os.path.join(directory, "profile_*.csv")))
-    if not files:
-        raise RuntimeError(f"{directory}: no profile_*.csv")
-    rows = list(csv.DictReader(open(files[-1])))
-    return sorted((float(r["angle"]), float(r["radial_displacement"])) for r in rows)
 
 
 def face_maximum(points, i):
@@ -67,7 +58,7 @@ def read_run(directory):
         raise RuntimeError(f"{directory}: the run has not finished (revolution {rows[-1]['die_roll_revolution']},"
                            f" feed {rows[-1]['die_roll_feed']}: the die has not retracted)")
     force = cs.history_value(rows, "mean(60,300)", "die_roll_force_magnitude", "die_roll_revolution")
-    points = last_profile(directory)
+    points = cs.read_profile(directory, dict(file="profile_*.csv", x="angle", y="radial_displacement"), [])
     i = max(range(len(points)), key=lambda k: points[k][1])
     face, face_angle, vertex = face_maximum(points, i)
     m = re.search(r"(?:^|_)L(\d+)_s([0-9.]+)$", os.path.basename(os.path.normpath(directory)))
