@@ -57,6 +57,20 @@ namespace ausroll::io
     log << std::endl;
   }
 
+  void write_solve_summary(dealii::ConditionalOStream &log,
+                           const std::size_t           steps,
+                           const unsigned long long    solves,
+                           const double                median,
+                           const unsigned long long    discarded)
+  {
+    log << "Newton: " << solves << " solves in " << steps << " steps (median " << median
+        << " per step)";
+    if (discarded > 0)
+      log << ", " << discarded << " more in discarded attempts (failed and solved again, or "
+          << "shortened)";
+    log << std::endl;
+  }
+
   void write_step_line(dealii::ConditionalOStream &log, const StepSummary &s)
   {
     std::ostringstream percent;

@@ -425,6 +425,11 @@ namespace ausroll::scene
     stepper.run(*this, time, dt, step_number);
     write_output();
 
+    io::write_solve_summary(log,
+                            stepper.solve_count.per_step.size(),
+                            stepper.solve_count.accepted(),
+                            stepper.solve_count.median(),
+                            stepper.solve_count.discarded);
     io::write_run_footer(log,
                          step_number,
                          wall_clock.wall_time(),

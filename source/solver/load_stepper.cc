@@ -3,10 +3,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <sstream>
 
 namespace ausroll::solver
 {
+  unsigned long long SolveCount::accepted() const
+  {
+    return std::accumulate(per_step.begin(), per_step.end(), 0ull);
+  }
+
+  double SolveCount::median() const
+  {
+    if (per_step.empty())
+      return 0.;
+    std::vector<unsigned int> sorted = per_step;
+    std::sort(sorted.begin(), sorted.end());
+    const std::size_t n = sorted.size();
+    return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+  }
+
   LoadStepper::LoadStepper(const LoadingParameters    &loading,
                            const std::string          &output_directory,
                            dealii::ConditionalOStream &log,
@@ -47,6 +63,7 @@ namespace ausroll::solver
 
       if (!result.converged)
       {
+        step.discarded_solves += result.iterations;
         problem.restart_step();
         const unsigned int n_released = released ? 0 : problem.release_after_failure();
         released = true;
@@ -96,6 +113,7 @@ namespace ausroll::solver
         step.time = time;
         return step;
       }
+      step.discarded_solves += result.iterations;
       dt *= decision.step_factor;
     }
   }
@@ -146,6 +164,8 @@ namespace ausroll::solver
       dt_try = step.time - step.t_start;
       last_step_size = dt_try;
       step.step_size = dt;
+      solve_count.per_step.push_back(step.result.iterations);
+      solve_count.discarded += step.discarded_solves;
       const unsigned int status_changes = problem.accept_step(step);
       ++steps_done;
       t_done = step.time;

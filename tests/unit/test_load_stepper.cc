@@ -355,14 +355,11 @@ TEST(LoadStepper, AdaptiveAfterCutbackKeepsTheSizeTaken)
   EXPECT_EQ(p.solves[3].dt, 0.1875);
 }
 
-// A contact strategy that shortens step 1 to half (a status change inside it, load-increment
-// ratio): the step is solved again with dt / 2 and accepted there; the run goes on to the grid.
-TEST(LoadStepper, ContactStrategyShortensTheStep)
+namespace
 {
-  Logs        logs;
-  LoadStepper stepper(loading(), "out", logs.log, logs.detail_log);
-  MockProblem p;
-  p.decide = [](unsigned int step, double dt)
+  /** A contact strategy's decision that solves step 1 again with half its size if it was a
+      full nominal step (0.25), and accepts every other step. */
+  contact::StepDecision halve_first_full_step(const unsigned int step, const double dt)
   {
     contact::StepDecision d;
     if (step == 1 && dt == 0.25)
@@ -371,11 +368,67 @@ TEST(LoadStepper, ContactStrategyShortensTheStep)
       d.step_factor = 0.5;
     }
     return d;
-  };
+  }
+} // namespace
+
+// A contact strategy that shortens step 1 to half (a status change inside it, load-increment
+// ratio): the step is solved again with dt / 2 and accepted there; the run goes on to the grid.
+TEST(LoadStepper, ContactStrategyShortensTheStep)
+{
+  Logs        logs;
+  LoadStepper stepper(loading(), "out", logs.log, logs.detail_log);
+  MockProblem p;
+  p.decide = halve_first_full_step;
   stepper.run(p, 0., 0.25, 0);
   EXPECT_EQ(p.times(), (std::vector<double>{0.125, 0.25, 0.5, 0.75, 1.}));
   EXPECT_EQ(p.accepted[0].cutbacks, 0u);
   EXPECT_EQ(p.restarts, 0u);
+}
+
+// The solve count of the run holds the solves of every attempt: step 1 is shortened once by the
+// contact strategy (3 solves discarded) and step 2 goes on to the grid (0.125); step 3 fails at
+// 0.25 (20 solves, the mock's count of a failure) and is cut back; its accepted attempt takes 5
+// solves, every other 3.
+TEST(LoadStepper, SolveCountHoldsDiscardedAttempts)
+{
+  Logs        logs;
+  LoadStepper stepper(loading(), "out", logs.log, logs.detail_log);
+  MockProblem p;
+  p.decide = halve_first_full_step;
+  p.converges = [](unsigned int step, double dt, double) { return step != 3 || dt < 0.25; };
+  p.iterations = [](unsigned int step) { return step == 3 ? 5u : 3u; };
+  stepper.run(p, 0., 0.25, 0);
+  const SolveCount &count = stepper.solve_count;
+  ASSERT_EQ(count.per_step.size(), p.accepted.size());
+  EXPECT_EQ(p.accepted[0].discarded_solves, 3u);
+  EXPECT_EQ(p.accepted[1].discarded_solves, 0u);
+  EXPECT_EQ(p.accepted[2].discarded_solves, 20u);
+  EXPECT_EQ(p.accepted[2].cutbacks, 1u);
+  EXPECT_EQ(count.discarded, 23u);
+  unsigned long long accepted = 0;
+  for (std::size_t i = 0; i < p.accepted.size(); ++i)
+  {
+    EXPECT_EQ(count.per_step[i], p.accepted[i].result.iterations);
+    accepted += p.accepted[i].result.iterations;
+  }
+  EXPECT_EQ(count.accepted(), accepted);
+  EXPECT_EQ(count.median(), 3.);
+  // the total of all solve() calls of the mock: 20 for a failure, else its iterations
+  unsigned long long all = 0;
+  for (const Solve &s : p.solves)
+    all += s.converged ? (s.step == 3 ? 5u : 3u) : 20u;
+  EXPECT_EQ(count.accepted() + count.discarded, all);
+}
+
+TEST(SolveCount, MedianOfEvenAndOddCounts)
+{
+  SolveCount c;
+  EXPECT_EQ(c.median(), 0.);
+  c.per_step = {7, 2, 3};
+  EXPECT_EQ(c.median(), 3.);
+  c.per_step = {7, 2, 3, 4};
+  EXPECT_EQ(c.median(), 3.5);
+  EXPECT_EQ(c.accepted(), 16u);
 }
 
 // Resumed runs continue at their step number and time.

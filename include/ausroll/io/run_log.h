@@ -14,6 +14,7 @@
 
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace ausroll::io
 {
@@ -44,6 +45,17 @@ namespace ausroll::io
                         const double                seconds,
                         const std::string          &directory,
                         const bool                  with_vtu);
+
+  /**
+   * "Newton: S solves in N steps (median M per step)[, D more in discarded attempts (failed and
+   * solved again, or shortened)]": the whole Newton cost of the run. @p solves are those of the
+   * accepted attempts of the @p steps steps, @p discarded those of the other attempts.
+   */
+  void write_solve_summary(dealii::ConditionalOStream &log,
+                           const std::size_t           steps,
+                           const unsigned long long    solves,
+                           const double                median,
+                           const unsigned long long    discarded);
 
   /** What the line of a converged step reports. */
   struct StepSummary

@@ -15,6 +15,7 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <string>
+#include <vector>
 
 namespace ausroll::solver
 {
@@ -29,6 +30,28 @@ namespace ausroll::solver
     double       step_size = 0.;
     NewtonResult result;       ///< Newton statistics of the converged solve
     unsigned int cutbacks = 0; ///< cutbacks of this step
+    /** Linear solves of this step's attempts that were not accepted: failed (then retried
+        without the predictor, with released statuses or cut back) or converged but shortened
+        by the contact strategy (`Contact/Strategy = load increment ratio`). */
+    unsigned int discarded_solves = 0;
+  };
+
+  /**
+   * The Newton solves of a run (since its start or its restart from a checkpoint): those of the
+   * accepted attempt of every step (the `newton_iterations` of the history) and those of the
+   * attempts that were discarded, so that the cost of a run is complete where a step was solved
+   * more than once.
+   */
+  struct SolveCount
+  {
+    std::vector<unsigned int> per_step;      ///< solves of the accepted attempt of each step
+    unsigned long long        discarded = 0; ///< solves of the discarded attempts
+
+    /** Sum of per_step. */
+    unsigned long long accepted() const;
+
+    /** Median of per_step (0 without steps). */
+    double median() const;
   };
 
   /**
@@ -135,6 +158,9 @@ namespace ausroll::solver
 
     /** Size of the last converged step (the predictor's u_n - u_n-1 spans it; 0: none yet). */
     double last_step_size = 0.;
+
+    /** The solves of the steps run by run() so far. */
+    SolveCount solve_count;
 
   private:
     LoadingParameters           loading;
