@@ -12,6 +12,11 @@
              8 x 6, 16 x 12, 32 x 24: the side surface becomes a candidate when it reaches the
              platen (Contact/Penetrating boundaries = add, the default) and the run finishes
              like the shipped scene; with "warn" (8 x 6) it warns and fails at 29 %.
+  events     where the Newton solves go (doc/scenes/hard_cases.md, section 11): the punch
+  events_indentation  (refinements 2 and 3, and 2 with Target Newton iterations = 4) and
+             prm/indentation.prm as shipped, with Output/Verbosity = verbose; each log is split
+             by event_steps.py into steps with and without contact status changes (one more
+             Markdown row per run).
 
 With --old the same meshes run with the stepping of before (Step control = halving, Predictor =
 none, Contact/Strategy = active set). Prints one Markdown row per run (steps, cutbacks, Newton
@@ -32,6 +37,8 @@ import subprocess
 import sys
 
 SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import event_steps  # noqa: E402  (benchmarks/hard_cases/event_steps.py)
 
 CASES = {
     "punch": ("hard_punch.prm", "die_punch_force_y", 1.0, [
@@ -64,20 +71,28 @@ CASES = {
         ("8 x 6, warn", ["Geometry/Rectangle/Cells = 8, 6",
                          "Contact/Die 0/Candidate boundaries = 3",
                          "Contact/Penetrating boundaries = warn"])]),
+    "events": ("hard_punch.prm", "die_punch_force_y", 1.0, [
+        ("refinements 2", ["Geometry/Local refinements = 2"]),
+        ("refinements 2, target 4", ["Geometry/Local refinements = 2",
+                                     "Loading/Target Newton iterations = 4"]),
+        ("refinements 3", ["Geometry/Local refinements = 3"])]),
+    "events_indentation": ("indentation.prm", "die_punch_force_y", 1.0, [
+        ("as shipped", [])]),
 }
-NEW = {"punch": [], "upsetting": ["Loading/Predictor = linear extrapolation",
+VERBOSE = ("events", "events_indentation")
+NEW = {"punch": [], "events": [], "events_indentation": [], "upsetting": ["Loading/Predictor = linear extrapolation",
                                   "Loading/Step control = adaptive"], "curvature": [],
        "top_only": ["Loading/Predictor = linear extrapolation", "Loading/Step control = adaptive"]}
 OLD = ["Loading/Step control = halving", "Loading/Predictor = none",
        "Contact/Strategy = active set"]
 
 
-def run(ausroll, work, name, base, overrides):
+def run(ausroll, work, name, base, overrides, verbosity="normal"):
     prm = os.path.join(work, name + ".prm")
     out = os.path.join(work, name)
     subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "prm_variant.py"),
                     os.path.join(SOURCE, "prm", base), prm, f"Output/Directory = {out}",
-                    "Output/Write VTU = false", "Output/Verbosity = normal"] + overrides,
+                    "Output/Write VTU = false", f"Output/Verbosity = {verbosity}"] + overrides,
                    check=True)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     with open(out + ".log", "w") as log:
@@ -108,7 +123,8 @@ def main():
         for label, overrides in meshes:
             name = f"{case}_{label.replace(' ', '')}" + ("_old" if a.old else "")
             status, rows, cpu, warned = run(a.ausroll, a.work, name, base,
-                                            overrides + (OLD if a.old else NEW[case]))
+                                            overrides + (OLD if a.old else NEW[case]),
+                                            "verbose" if case in VERBOSE else "normal")
             newton = [int(float(r["newton_iterations"])) for r in rows]
             cutbacks = sum(int(float(r["cutbacks"])) for r in rows)
             force = -scale * float(rows[-1][column]) if rows else float("nan")
@@ -119,7 +135,15 @@ def main():
                   f"{len(rows)} | {cutbacks} | {statistics.median(newton) if newton else 0} / "
                   f"{max(newton) if newton else 0} | {cpu:.0f} | {force:.1f} | "
                   f"{'yes' if warned else 'no'} |", flush=True)
-        if case in ("curvature", "top_only"):
+            if case in VERBOSE:
+                with open(os.path.join(a.work, name + ".log"), errors="replace") as f:
+                    split = event_steps.summary(event_steps.read_steps(f))
+                ev, other = split["events"], split["others"]
+                print(f"|   | {label}: steps with status changes {ev['steps']} ({ev['solves']} "
+                      f"solves, median {ev['median']:g}); without {other['steps']} "
+                      f"({other['solves']} solves, median {other['median']:g}) | | | | | | | | |",
+                      flush=True)
+        if case in ("curvature", "top_only") + VERBOSE:
             continue
         forces = forces[-3:]  # the three finest meshes that finished
         ratio = ((forces[1] - forces[0]) / (forces[2] - forces[1])
