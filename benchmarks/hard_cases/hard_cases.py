@@ -14,9 +14,12 @@
              like the shipped scene; with "warn" (8 x 6) it warns and fails at 29 %.
   events     where the Newton solves go (doc/scenes/hard_cases.md, section 11): the punch
   events_indentation  (refinements 2 and 3, and 2 with Target Newton iterations = 4) and
-             prm/indentation.prm as shipped, with Output/Verbosity = verbose; each log is split
-             by event_steps.py into steps with and without contact status changes (one more
-             Markdown row per run).
+             prm/indentation.prm as shipped. "events" is not among the default cases: "punch"
+             runs refinements 2 and 3 already.
+
+Every run writes a verbose log (Output/Verbosity = verbose); the log of a run with the adaptive
+step control is split by event_steps.py into steps with and without contact status changes (one
+more Markdown row per run).
 
 With --old the same meshes run with the stepping of before (Step control = halving, Predictor =
 none, Contact/Strategy = active set). Prints one Markdown row per run (steps, cutbacks, Newton
@@ -79,20 +82,20 @@ CASES = {
     "events_indentation": ("indentation.prm", "die_punch_force_y", 1.0, [
         ("as shipped", [])]),
 }
-VERBOSE = ("events", "events_indentation")
-NEW = {"punch": [], "events": [], "events_indentation": [], "upsetting": ["Loading/Predictor = linear extrapolation",
-                                  "Loading/Step control = adaptive"], "curvature": [],
-       "top_only": ["Loading/Predictor = linear extrapolation", "Loading/Step control = adaptive"]}
+DEFAULT_CASES = [case for case in CASES if case != "events"]
+ADAPTIVE = ["Loading/Predictor = linear extrapolation", "Loading/Step control = adaptive"]
+NEW = {"punch": [], "upsetting": ADAPTIVE, "curvature": [], "top_only": ADAPTIVE, "events": [],
+       "events_indentation": []}
 OLD = ["Loading/Step control = halving", "Loading/Predictor = none",
        "Contact/Strategy = active set"]
 
 
-def run(ausroll, work, name, base, overrides, verbosity="normal"):
+def run(ausroll, work, name, base, overrides):
     prm = os.path.join(work, name + ".prm")
     out = os.path.join(work, name)
     subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "prm_variant.py"),
                     os.path.join(SOURCE, "prm", base), prm, f"Output/Directory = {out}",
-                    "Output/Write VTU = false", f"Output/Verbosity = {verbosity}"] + overrides,
+                    "Output/Write VTU = false", "Output/Verbosity = verbose"] + overrides,
                    check=True)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     with open(out + ".log", "w") as log:
@@ -101,9 +104,11 @@ def run(ausroll, work, name, base, overrides, verbosity="normal"):
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     with open(os.path.join(out, "history.csv")) as f:
         rows = list(csv.DictReader(f))[1:]
-    with open(out + ".log") as f:
-        warned = any("warning: the mesh folds" in line for line in f)
-    return status, rows, cpu, warned
+    with open(out + ".log", errors="replace") as f:
+        lines = f.readlines()
+    warned = any("warning: the mesh folds" in line for line in lines)
+    # (solves, status changes) per step from the step-control lines (adaptive stepping only)
+    return status, rows, cpu, warned, event_steps.read_steps(lines)
 
 
 def main():
@@ -111,7 +116,7 @@ def main():
     p.add_argument("--ausroll", required=True)
     p.add_argument("--work", required=True)
     p.add_argument("--old", action="store_true")
-    p.add_argument("--cases", nargs="+", default=list(CASES))
+    p.add_argument("--cases", nargs="+", default=DEFAULT_CASES)
     a = p.parse_args()
     os.makedirs(a.work, exist_ok=True)
     print("| case | mesh | status | end | steps | cutbacks | Newton median / max | CPU s | force | "
@@ -122,9 +127,8 @@ def main():
         forces = []
         for label, overrides in meshes:
             name = f"{case}_{label.replace(' ', '')}" + ("_old" if a.old else "")
-            status, rows, cpu, warned = run(a.ausroll, a.work, name, base,
-                                            overrides + (OLD if a.old else NEW[case]),
-                                            "verbose" if case in VERBOSE else "normal")
+            status, rows, cpu, warned, steps = run(a.ausroll, a.work, name, base,
+                                                   overrides + (OLD if a.old else NEW[case]))
             newton = [int(float(r["newton_iterations"])) for r in rows]
             cutbacks = sum(int(float(r["cutbacks"])) for r in rows)
             force = -scale * float(rows[-1][column]) if rows else float("nan")
@@ -135,15 +139,14 @@ def main():
                   f"{len(rows)} | {cutbacks} | {statistics.median(newton) if newton else 0} / "
                   f"{max(newton) if newton else 0} | {cpu:.0f} | {force:.1f} | "
                   f"{'yes' if warned else 'no'} |", flush=True)
-            if case in VERBOSE:
-                with open(os.path.join(a.work, name + ".log"), errors="replace") as f:
-                    split = event_steps.summary(event_steps.read_steps(f))
+            if steps:
+                split = event_steps.summary(steps)
                 ev, other = split["events"], split["others"]
                 print(f"|   | {label}: steps with status changes {ev['steps']} ({ev['solves']} "
                       f"solves, median {ev['median']:g}); without {other['steps']} "
                       f"({other['solves']} solves, median {other['median']:g}) | | | | | | | | |",
                       flush=True)
-        if case in ("curvature", "top_only") + VERBOSE:
+        if case in ("curvature", "top_only", "events", "events_indentation"):
             continue
         forces = forces[-3:]  # the three finest meshes that finished
         ratio = ((forces[1] - forces[0]) / (forces[2] - forces[1])

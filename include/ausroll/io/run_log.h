@@ -14,7 +14,6 @@
 
 #include <initializer_list>
 #include <string>
-#include <vector>
 
 namespace ausroll::io
 {
