@@ -45,7 +45,7 @@ namespace ausroll::solver
         "otherwise; after a cutback it does not grow. Steps never exceed the nominal size and "
         "still end on the nominal grid (doc/scenes/hard_cases.md).");
     prm.declare_entry("Target Newton iterations",
-                      "6",
+                      "4",
                       Patterns::Integer(1, 100),
                       "Step control = adaptive: Newton iterations per step aimed at.");
     prm.declare_entry("Target status changes",

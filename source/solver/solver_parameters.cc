@@ -13,7 +13,7 @@ namespace ausroll::solver
                       Patterns::Integer(1, 1000),
                       "Newton iterations per load step before the step is cut back.");
     prm.declare_entry("Residual tolerance",
-                      "1e-9",
+                      "1e-6",
                       Patterns::Double(0.),
                       "Convergence when the out-of-balance force of the free equations is below "
                       "this fraction of the force level (max of external forces and reactions).");

@@ -45,7 +45,7 @@ namespace ausroll::solver
     double       step_growth_factor = 1.5; ///< `Step growth factor` back towards the nominal step
     Predictor    predictor = Predictor::none;         ///< `Predictor` of the first Newton iterate
     StepControl  step_control = StepControl::halving; ///< `Step control`
-    unsigned int target_newton_iterations = 6;        ///< `Target Newton iterations` (adaptive)
+    unsigned int target_newton_iterations = 4;        ///< `Target Newton iterations` (adaptive)
     unsigned int target_status_changes = 4;    ///< `Target status changes` (adaptive; 0: off)
     double       minimum_step_factor = 0.25;   ///< `Minimum step factor`: smallest shrink per step
     double       minimum_step_fraction = 1e-4; ///< `Minimum step fraction` of the nominal step

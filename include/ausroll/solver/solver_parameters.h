@@ -48,7 +48,7 @@ namespace ausroll::solver
   struct SolverParameters
   {
     unsigned int max_newton_iterations = 25; ///< `Maximum Newton iterations`
-    double       residual_tolerance = 1e-9;  ///< `Residual tolerance` (relative to the force level)
+    double       residual_tolerance = 1e-6;  ///< `Residual tolerance` (relative to the force level)
     double       absolute_tolerance = 1e-10; ///< `Absolute residual tolerance` (N)
     double       divergence_factor = 1e6;    ///< `Divergence factor`: abort when |r| grows by it
     /** `Status pass tolerance`: constraints that depend on the solution (nested active set) are
