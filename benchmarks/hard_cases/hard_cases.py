@@ -6,6 +6,8 @@
   upsetting  prm/upsetting.prm (platen contact on the top face and the free surface, F-bar) with
              the predictor and the adaptive step control, Q2 8 x 6, 16 x 12, 32 x 24, 64 x 48,
              to 30 %;
+  upsetting_shipped  the same meshes with the stepping of the file (120 equal steps, the
+             linear predictor: the peer code's increments);
   curvature  Contact/Curvature tangent: the elastic frictionless punch with the old and the new
              tangent, the plastic punch (refinements 3) with the new one;
   top_only   the upsetting with the platen on the top face only (Candidate boundaries = 3) on
@@ -53,6 +55,11 @@ CASES = {
         ("16 x 12", ["Geometry/Rectangle/Cells = 16, 12"]),
         ("32 x 24", ["Geometry/Rectangle/Cells = 32, 24"]),
         ("64 x 48", ["Geometry/Rectangle/Cells = 64, 48"])]),
+    "upsetting_shipped": ("upsetting.prm", "die_platen_force_y", 1e-3, [
+        ("8 x 6", ["Geometry/Rectangle/Cells = 8, 6"]),
+        ("16 x 12", ["Geometry/Rectangle/Cells = 16, 12"]),
+        ("32 x 24", ["Geometry/Rectangle/Cells = 32, 24"]),
+        ("64 x 48", ["Geometry/Rectangle/Cells = 64, 48"])]),
     # the curvature term of the slip-node tangent (Contact/Curvature tangent), elastic and
     # plastic punch; and the upsetting with the platen on the top face only (warns that the
     # side surface passes through the platen, then folds)
@@ -84,8 +91,8 @@ CASES = {
 }
 DEFAULT_CASES = [case for case in CASES if case != "events"]
 ADAPTIVE = ["Loading/Predictor = linear extrapolation", "Loading/Step control = adaptive"]
-NEW = {"punch": [], "upsetting": ADAPTIVE, "curvature": [], "top_only": ADAPTIVE, "events": [],
-       "events_indentation": []}
+NEW = {"punch": [], "upsetting": ADAPTIVE, "upsetting_shipped": [], "curvature": [],
+       "top_only": ADAPTIVE, "events": [], "events_indentation": []}
 OLD = ["Loading/Step control = halving", "Loading/Predictor = none",
        "Contact/Strategy = active set"]
 

@@ -33,7 +33,7 @@ namespace
     const LoadingParameters p;
     EXPECT_DOUBLE_EQ(p.step_factor(8, 0), 0.5);   // 4 / 8
     EXPECT_DOUBLE_EQ(p.step_factor(2, 8), 0.5);   // 4 / 8
-    EXPECT_DOUBLE_EQ(p.step_factor(5, 10), 0.4); // min(4/5, 4/10)
+    EXPECT_DOUBLE_EQ(p.step_factor(5, 10), 0.4);  // min(4/5, 4/10)
     EXPECT_DOUBLE_EQ(p.step_factor(60, 0), 0.25); // not below Minimum step factor
   }
 
