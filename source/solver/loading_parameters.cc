@@ -47,7 +47,9 @@ namespace ausroll::solver
     prm.declare_entry("Target Newton iterations",
                       "4",
                       Patterns::Integer(1, 100),
-                      "Step control = adaptive: Newton iterations per step aimed at.");
+                      "Step control = adaptive: Newton iterations per step aimed at. Steps grow "
+                      "after at most half of it and keep their size up to it, so they settle at "
+                      "half the target plus one (4: 3 iterations per step).");
     prm.declare_entry("Target status changes",
                       "4",
                       Patterns::Integer(0, 100000),
