@@ -35,7 +35,8 @@ import os
 import subprocess
 import sys
 
-from checklist import Checklist, CoulombCone  # tests/checks/checklist.py (next to this script)
+# tests/checks/checklist.py (next to this script)
+from checklist import Checklist, CoulombCone, ausroll_command
 
 MU = 0.3
 # The slice and the 2D run agree to their Newton tolerance, not to round-off; at the default
@@ -46,10 +47,7 @@ TIGHT = ("Solver/Residual tolerance=1e-9",)
 
 def run(ausroll, prm, directory, settings=()):
     os.makedirs(directory, exist_ok=True)
-    command = [ausroll, prm, "--overwrite"]
-    for setting in settings:
-        command += ["--set", setting]
-    result = subprocess.run(command, cwd=directory)
+    result = subprocess.run(ausroll_command(ausroll, prm, settings), cwd=directory)
     return result.returncode
 
 

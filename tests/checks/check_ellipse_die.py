@@ -16,15 +16,15 @@ import os
 import subprocess
 import sys
 
+from checklist import ausroll_command  # tests/checks/checklist.py (next to this script)
+
 ausroll, source = sys.argv[1], sys.argv[2]
 prm = os.path.join(source, "tests", "checks", "scenes", "disk_rolling_short.prm")
 compare = os.path.join(source, "tests", "checks", "compare_histories.py")
 
 
 def run(directory, *overrides):
-    args = [ausroll, prm, "--overwrite", "--set", f"Output/Directory={directory}"]
-    for o in overrides:
-        args += ["--set", o]
+    args = ausroll_command(ausroll, prm, (f"Output/Directory={directory}",) + overrides)
     status = subprocess.run(args, stdout=subprocess.DEVNULL).returncode
     if status != 0:
         sys.exit(f"FAIL: {directory} exited with {status}")

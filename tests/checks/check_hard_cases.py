@@ -5,9 +5,10 @@ where it failed or was cut back before the fixes; about 40 s of CPU in all.
 1. Punch (prm/hard_punch.prm on its coarsest mesh, Local refinements = 2, to d = 1 mm): finishes
    with at most 2 cutbacks (before: 3 on this mesh, 16-30 on the others, the finest stopped at
    d = 0.41 mm) and a median of at most 3 Newton iterations per step (the goal of issue 17; 4
-   with the defaults of before 2026-12-06: Residual tolerance 1e-9, Target Newton iterations 6). The force at 1 mm within 5 % of the value extrapolated from the three meshes of
-   the benchmark (Richardson, 4864 N/mm; this mesh is 3.1 % low, the discretisation error of its
-   0.625 mm cells at the contact edge), and the mean pressure F / a between the plane-strain
+   with the defaults of before 2026-12-06: Residual tolerance 1e-9, Target Newton iterations 6).
+   The force at 1 mm within 5 % of the value extrapolated from the three meshes of the benchmark
+   (Richardson, 4864 N/mm; this mesh is 3.1 % low, the discretisation error of its 0.625 mm
+   cells at the contact edge), and the mean pressure F / a between the plane-strain
    compression limit 2k of the slab (k = sigma_y / sqrt 3; no indentation is possible below the
    yield pressure) and Prandtl's (2 + pi) k (the largest constraint a flat punch on a half-space
    reaches; the thin slab on a frictionless base is less constrained).

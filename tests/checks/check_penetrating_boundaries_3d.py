@@ -26,7 +26,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checklist import Checklist  # noqa: E402
+from checklist import Checklist, ausroll_command  # noqa: E402
 
 COMMON = ["Geometry/Global refinements=1", "Loading/End time=20", "Loading/Number of steps=20",
           "Output/Write VTU=false", "Loading/Predictor=linear extrapolation",
@@ -34,9 +34,7 @@ COMMON = ["Geometry/Global refinements=1", "Loading/End time=20", "Loading/Numbe
 
 
 def run(ausroll, prm, directory, extra):
-    args = [ausroll, prm, "--overwrite"]
-    for s in COMMON + [f"Output/Directory={directory}"] + extra:
-        args += ["--set", s]
+    args = ausroll_command(ausroll, prm, COMMON + [f"Output/Directory={directory}"] + extra)
     r = subprocess.run(args, capture_output=True, text=True)
     print(r.stdout[-3000:])
     forces = {}

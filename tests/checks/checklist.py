@@ -4,10 +4,18 @@ the exit status at the end (the checks are run as ctests, which look at the exit
 import subprocess
 
 
+def ausroll_command(ausroll, prm, settings=()):
+    """``ausroll prm --overwrite`` with ``--set ENTRY=VALUE`` for every one of @p settings."""
+    command = [ausroll, prm, "--overwrite"]
+    for setting in settings:
+        command += ["--set", setting]
+    return command
+
+
 def run_scene(ausroll, prm):
     """Run ``ausroll prm --overwrite``, print its output, and return its standard output, or None
     (with the reason printed) if it failed."""
-    run = subprocess.run([ausroll, prm, "--overwrite"], capture_output=True, text=True)
+    run = subprocess.run(ausroll_command(ausroll, prm), capture_output=True, text=True)
     print(run.stdout)
     if run.returncode != 0:
         print(run.stderr)
