@@ -119,5 +119,45 @@ check("on grid", cs.on_grid(coarse, grid) == [0.5, 1.0])
 check("template", cs.expand("Loading/End time = {n + 8}", n=288, level=None)
       == "Loading/End time = 296")
 
+# 11. the report prints at least 7 significant digits of values and errors: three forces that
+# agree to 4 digits (as -1.7e+06 in the 4-digit report) must differ in what is printed
+check("7 digits", cs.fmt(-1712345.6) == "-1712346" and cs.fmt(1.2345678e-3) == "0.001234568",
+      f"{cs.fmt(-1712345.6)}, {cs.fmt(1.2345678e-3)}")
+
+# 12. the figure names the quantities it cannot draw instead of dropping them
+h = [1.0, 0.5, 0.25]
+good = cs.analyse_sequence([2.0 + 0.3 * x ** 2 for x in h], h)
+diverging = cs.analyse_sequence([1.0, 1.1, 1.4], h)  # differences grow: order < 0, no estimate
+for a, scale in ((good, 2.0), (diverging, 1.4)):  # what study() adds: runs and scale
+    a["runs"] = ["level1", "level2", "level3"]
+    a["scale"] = scale
+record = {"label": "levels 1, 2, 3", "runs": [],
+          "analyses": {"F_good": good, "F_bad": diverging, "F_failed": None}}
+missing = cs.plot_omissions([record])
+names = [n for n, _, _ in missing]
+check("omissions: the diverging and the failed quantity, not the converged one",
+      names == ["F_bad", "F_failed"], f"{missing}")
+check("omission reasons say why", "did not converge" in missing[0][2]
+      and "two successful runs" in missing[1][2], f"{missing}")
+try:
+    import matplotlib  # noqa: F401
+    have_matplotlib = True
+except ImportError:
+    have_matplotlib = False
+if have_matplotlib:
+    import contextlib
+    import io
+    import tempfile
+    record["runs"] = [{"name": n, "cpu": c} for n, c in zip(good["runs"], [1.0, 4.0, 16.0])]
+    with tempfile.TemporaryDirectory() as tmp:
+        out = io.StringIO()
+        png = os.path.join(tmp, "wp.png")
+        with contextlib.redirect_stdout(out):
+            cs.plot([record], png)
+        printed = out.getvalue()
+        check("figure written, omissions printed", os.path.getsize(png) > 0
+              and "F_bad (levels 1, 2, 3) not drawn" in printed
+              and "F_failed (levels 1, 2, 3) not drawn" in printed, printed)
+
 print(f"{len(failures)} failure(s)")
 sys.exit(1 if failures else 0)
