@@ -9,21 +9,15 @@ Exit status: 0 agree, 1 differ, 2 usage/data error.
 """
 
 import argparse
-import csv
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+from history_csv import read_rows  # noqa: E402
 
 
 def read(path):
-    try:
-        with open(path, newline="") as f:
-            rows = list(csv.DictReader(f))
-    except OSError as e:
-        print(f"compare_histories.py: error: cannot read '{path}': {e.strerror}", file=sys.stderr)
-        sys.exit(2)
-    if not rows:
-        print(f"compare_histories.py: error: '{path}' has no rows", file=sys.stderr)
-        sys.exit(2)
-    return rows
+    return read_rows(path, "compare_histories.py")
 
 
 def main():
@@ -39,7 +33,8 @@ def main():
 
     a, b = read(args.first), read(args.second)
     if len(a) != len(b):
-        print(f"different number of rows: {len(a)} vs {len(b)}")
+        print(f"different number of rows: {len(a)} vs {len(b)} (scripts/compare_histories.py "
+              f"aligns the two on time and shows where they differ)")
         return 1
     columns = [c for c in a[0].keys() if c not in args.ignore]
     missing = [c for c in columns if c not in b[0]]
