@@ -446,8 +446,9 @@ def report(record):
 
 def plot_omissions(records):
     """The quantities the work-precision figure cannot draw, with the reason: [(quantity, sequence
-    label, reason)]. A quantity is drawn only where its sequence gives an extrapolated value and a
-    positive estimated error of at least one run."""
+    label, reason)]. A quantity is drawn only where its sequence converges monotonically (or the
+    two finest runs agree) to an extrapolated value and at least one run has a positive estimated
+    error."""
     missing = []
     for rec in records:
         for n, a in rec["analyses"].items():
@@ -455,6 +456,10 @@ def plot_omissions(records):
                 reason = "fewer than two successful runs"
             elif a["extrapolated"] is None:
                 reason = "did not converge: " + (a["note"] or a["convergence"])
+            elif a["convergence"] == "oscillatory":
+                # the differences to the finest value are no error estimate: say so instead
+                reason = (f"oscillatory, no order: finest value {fmt(a['extrapolated'])} ± "
+                          f"{fmt(a['uncertainty'])} (range of the last three)")
             elif not a["scale"]:
                 reason = "extrapolated value is zero (no relative error)"
             elif not any(e is not None and e > 0 for e in a["errors"]):
@@ -474,18 +479,24 @@ def plot(records, filename):
     except ImportError:
         print("(matplotlib not installed: no figure; Debian: /usr/bin/python3)")
         return
-    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    import textwrap
+
+    missing = plot_omissions(records)
+    skipped = {(label, n) for n, label, _ in missing}
+    # the quantities that are not drawn are listed under the axes, with the reason
+    notes = []
+    for n, label, reason in missing:
+        notes += textwrap.wrap(f"{n} ({label}): {reason}", 110, subsequent_indent="    ")
+    fig, ax = plt.subplots(figsize=(7.5, 4.8 + 0.125 * (len(notes) + 1 if notes else 0)))
     markers = "os^vD<>p*h"
     styles = ["-", "--", ":", "-."]
     for j, rec in enumerate(records):
         for i, (n, a) in enumerate(rec["analyses"].items()):
-            if a is None or a["extrapolated"] is None or not a["scale"]:
+            if (rec["label"], n) in skipped:
                 continue
             runs = {r["name"]: r for r in rec["runs"]}
             pts = [(runs[name]["cpu"], e / a["scale"]) for name, e in zip(a["runs"], a["errors"])
                    if e is not None and e > 0]
-            if not pts:
-                continue
             line, = ax.loglog([p[0] for p in pts], [p[1] for p in pts],
                               marker=markers[i % len(markers)], linestyle=styles[j % len(styles)],
                               label=f"{n} ({rec['label']})")
@@ -494,23 +505,20 @@ def plot(records, filename):
                 ax.errorbar([fine], [a["uncertainty"] / a["scale"]], fmt="none",
                             yerr=[[0.5 * a["uncertainty"] / a["scale"]], [0]],
                             color=line.get_color(), capsize=3)
-    missing = plot_omissions(records)
-    if missing:
-        # say in the figure which quantities are not drawn (not converged), instead of dropping them
-        lines = ["not drawn:"] + [f"{n} ({label}): {reason}"
-                                                     for n, label, reason in missing]
-        ax.text(0.02, 0.02, "\n".join(lines), transform=ax.transAxes, fontsize=7, va="bottom",
-                ha="left", color="firebrick",
-                bbox=dict(facecolor="white", edgecolor="firebrick", alpha=0.85))
-        for n, label, reason in missing:
-            print(f"figure: {n} ({label}) not drawn: {reason}")
+    for n, label, reason in missing:
+        print(f"figure: {n} ({label}) not drawn: {reason}")
     ax.set_xlabel("CPU time of the run (s)")
     ax.set_ylabel("estimated error / |extrapolated value|")
     ax.grid(alpha=0.3, which="both")
     if ax.get_legend_handles_labels()[0]:
         ax.legend(fontsize=7)
     ax.set_title("work-precision (bar: GCI uncertainty of the finest run)", fontsize=9)
-    fig.tight_layout()
+    if notes:
+        fig.text(0.01, 0.01, "\n".join(["not drawn (no converged error estimate):"] + notes),
+                 fontsize=7, va="bottom", ha="left", color="firebrick", family="monospace")
+        fig.tight_layout(rect=(0, 0.125 * (len(notes) + 1) / fig.get_figheight() + 0.01, 1, 1))
+    else:
+        fig.tight_layout()
     fig.savefig(filename, dpi=110)
     print(f"figure: {filename}")
 

@@ -131,14 +131,18 @@ diverging = cs.analyse_sequence([1.0, 1.1, 1.4], h)  # differences grow: order <
 for a, scale in ((good, 2.0), (diverging, 1.4)):  # what study() adds: runs and scale
     a["runs"] = ["level1", "level2", "level3"]
     a["scale"] = scale
+oscillating = cs.analyse_sequence([1.0, 1.2, 1.1], h)
+oscillating["runs"], oscillating["scale"] = diverging["runs"], 1.1
 record = {"label": "levels 1, 2, 3", "runs": [],
-          "analyses": {"F_good": good, "F_bad": diverging, "F_failed": None}}
+          "analyses": {"F_good": good, "F_bad": diverging, "F_failed": None,
+                       "F_osc": oscillating}}
 missing = cs.plot_omissions([record])
 names = [n for n, _, _ in missing]
 check("omissions: the diverging and the failed quantity, not the converged one",
-      names == ["F_bad", "F_failed"], f"{missing}")
+      names == ["F_bad", "F_failed", "F_osc"], f"{missing}")
 check("omission reasons say why", "did not converge" in missing[0][2]
-      and "two successful runs" in missing[1][2], f"{missing}")
+      and "two successful runs" in missing[1][2]
+      and "oscillatory" in missing[2][2] and "1.1 ± 0.2" in missing[2][2], f"{missing}")
 try:
     import matplotlib  # noqa: F401
     have_matplotlib = True
@@ -149,6 +153,7 @@ if have_matplotlib:
     import io
     import tempfile
     record["runs"] = [{"name": n, "cpu": c} for n, c in zip(good["runs"], [1.0, 4.0, 16.0])]
+    oscillating["runs"] = good["runs"]
     with tempfile.TemporaryDirectory() as tmp:
         out = io.StringIO()
         png = os.path.join(tmp, "wp.png")
