@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Usage: benchmarks/amg_3d_parallel.sh BUILD_DIR LOG
-# The np = 1 vs np = 2 runs of doc/benchmarks.md, section "3D linear solver": benchmarks/amg_3d on
+# The np = 1 vs np = 2 runs of doc/studies/benchmarks_journal.md, section "3D linear solver": benchmarks/amg_3d on
 # Q1 unit cubes of N^3 cells (N = 10, 20, 40: three meshes, the last 206 763 DoFs), elastic and
 # small-strain J2, AMG, two solves each, on one process and on two MPI ranks, one after the other;
 # then two ranks on the meshes of the one-process table (N = 8, 16, 32, 64; one solve each).

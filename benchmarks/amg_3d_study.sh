@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Usage: benchmarks/amg_3d_study.sh BUILD_DIR LOG
-# The runs of doc/benchmarks.md, section "3D linear solver": benchmarks/amg_3d on Q1 blocks of
+# The runs of doc/studies/benchmarks_journal.md, section "3D linear solver": benchmarks/amg_3d on Q1 blocks of
 # N^3 cells (N = 8, 16, 32, 64: three refinements) for the elastic, small-strain plastic and
 # finite-strain plastic tangents with AMG, the direct solver (MUMPS) as far as it fits, Q2 blocks,
 # and np = 2 for the largest (np = 1 vs np = 2 side by side: benchmarks/amg_3d_parallel.sh). Each

@@ -9,7 +9,7 @@ Usage (from the repository root, after building):
         [--refinements 1 2 3] [--end-time 1.2 --steps 60] [--prm prm/gear_rolling_uniform.prm]
         [--plot doc/figures/gear_rolling_mesh_study.png]
 The pass is cut at --end-time (the step size is kept: --steps must match End time / 0.02).
-Prints a Markdown table (pasted into doc/benchmarks.md and doc/scenes/gear_rolling.md).
+Prints a Markdown table (pasted into doc/studies/benchmarks_journal.md and doc/scenes/gear_rolling.md).
 """
 
 import argparse

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Hard cases of issue 17 on mesh sequences (doc/scenes/hard_cases.md, doc/benchmarks.md):
+"""Hard cases of issue 17 on mesh sequences (doc/scenes/hard_cases.md, doc/studies/benchmarks_journal.md):
 
   punch      prm/hard_punch.prm, Local refinements = 2, 3, 4 (cells of 0.625, 0.31, 0.156 mm
              under the punch), to d = 1 mm;

@@ -2,7 +2,7 @@
 # 3D Hertz point contact (tests/checks/scenes/hertz3d.prm, doc/scenes/hertz_3d.md): the CI scene
 # (Q2, node spacing a / 8 under the contact) with Q1 on its mesh (a / 4), Q1 on the mesh refined
 # once more near the contact (a / 8) and Q2 on that mesh (a / 16); for each the table of tests/checks/check_hertz_3d.py (errors of a, p0 and F against
-# Hertz) and the CPU time (user + sys) of the run. No pass/fail (doc/benchmarks.md).
+# Hertz) and the CPU time (user + sys) of the run. No pass/fail (doc/studies/benchmarks_journal.md).
 # Usage: study.sh AUSROLL SOURCE_DIR WORK_DIR
 set -e
 ausroll=$1

@@ -18,7 +18,7 @@ indentation_width_depth.png, indentation_hertz.png (elastic pressure vs Hertz).
 Usage (from the repository root, after building):
     /usr/bin/python3 benchmarks/work_precision/contact_strategies.py [--ausroll build/ausroll]
         [--work /tmp/contact_strategies] [--figures doc/figures] [--data doc/data] [--reuse]
-Prints a markdown table (pasted into doc/scenes/*.md and doc/benchmarks.md) and writes
+Prints a markdown table (pasted into doc/scenes/*.md and doc/studies/benchmarks_journal.md) and writes
 DATA/contact_strategies.csv.
 """
 
