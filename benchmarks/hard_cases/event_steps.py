@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Where the Newton solves of a run with contact go: steps with and without contact status
-changes (doc/scenes/hard_cases.md, section 11).
+changes (doc/studies/hard_cases.md, section 11).
 
 Reads the terminal log of a run with `Output/Verbosity = verbose` and `Loading/Step control =
 adaptive` (its "step control: N Newton iterations, C contact status changes" lines) and prints per

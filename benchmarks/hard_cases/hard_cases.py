@@ -15,7 +15,7 @@
              platen (Contact/Penetrating boundaries = add, the default) and the run finishes
              like the shipped scene; with "warn" (8 x 6) it warns and fails before 30 % (24.2 %
              with the defaults of 2026-12-06).
-  events     where the Newton solves go (doc/scenes/hard_cases.md, section 11): the punch
+  events     where the Newton solves go (doc/studies/hard_cases.md, section 11): the punch
   events_indentation  (refinements 2 and 3, and 2 with Target Newton iterations = 4) and
              prm/indentation.prm as shipped. "events" is not among the default cases: "punch"
              runs refinements 2 and 3 already.
