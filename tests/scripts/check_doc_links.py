@@ -9,7 +9,8 @@ For every Markdown link and image outside code blocks and code spans:
   - a "#anchor" (alone or after a .md file) must be the slug of a heading of the target page,
     made by GitHub's rules: the heading's text without Markdown markup, lower case, every character
     that is not a letter, digit, space, hyphen or underscore removed, spaces turned into hyphens,
-    repeated headings numbered "-1", "-2", ...; explicit <a name="..."> / id="..." anchors count too.
+    repeated headings numbered "-1", "-2", ...; explicit <a name="..."> / id="..." anchors count
+    too.
 Prints one line per broken link (file:line: link: reason) and exits 1 if there is any, 0 otherwise.
 The self-test (--self-test) checks the slug rules on headings whose GitHub anchors are known.
 """
@@ -151,8 +152,10 @@ def self_test():
         "Section level 2: the 3D effect on a finer section":
             "section-level-2-the-3d-effect-on-a-finer-section",
         "Disk rolling (`prm/disk_rolling.prm`)": "disk-rolling-prmdisk_rollingprm",
-        "3D disk rolling: round-faced and flat-faced die": "3d-disk-rolling-round-faced-and-flat-faced-die",
-        "Plastic coarsening level (the DoFs level off)": "plastic-coarsening-level-the-dofs-level-off",
+        "3D disk rolling: round-faced and flat-faced die":
+            "3d-disk-rolling-round-faced-and-flat-faced-die",
+        "Plastic coarsening level (the DoFs level off)":
+            "plastic-coarsening-level-the-dofs-level-off",
         "Contact strategy: nested active set vs load increment ratio":
             "contact-strategy-nested-active-set-vs-load-increment-ratio",
         "Two ranks (issue 14, 6(e))": "two-ranks-issue-14-6e",
