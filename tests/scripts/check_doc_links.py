@@ -183,6 +183,25 @@ def self_test():
     if links != [(1, False, "a.md#b"), (1, True, "f.png")]:
         failed.append(("links", links, None))
         print(f"FAIL links found: {links}")
+    # a small tree: one good link of each kind, one broken anchor, one missing image, one missing file
+    import tempfile
+    with tempfile.TemporaryDirectory() as root:
+        os.makedirs(os.path.join(root, "doc", "figures"))
+        open(os.path.join(root, "doc", "figures", "a.png"), "w").close()
+        with open(os.path.join(root, "doc", "page.md"), "w") as f:
+            f.write("# Page\n\n## Results (2026)\n\n[self](#results-2026) [bad](#results)\n"
+                    "![ok](figures/a.png) ![missing](figures/b.png)\n")
+        with open(os.path.join(root, "README.md"), "w") as f:
+            f.write("[page](doc/page.md#page) [gone](doc/gone.md) [web](https://example.org)\n")
+        problems = []
+        for path in documentation_files(root):
+            problems += check_file(path, root)
+        expected = ["README.md:1: doc/gone.md: ", "doc/page.md:5: #results: ",
+                    "doc/page.md:6: figures/b.png: "]
+        if len(problems) != 3 or not all(p.startswith(e) for p, e in zip(sorted(problems),
+                                                                             expected)):
+            failed.append(("tree", problems, expected))
+            print(f"FAIL the small tree gives {problems}")
     print("self-test:", "FAIL" if failed else "ok")
     return 1 if failed else 0
 
