@@ -18,6 +18,7 @@ The self-test (--self-test) checks the slug rules on headings whose GitHub ancho
 import os
 import re
 import sys
+import tempfile
 import unicodedata
 
 EXTERNAL = re.compile(r"^[a-zA-Z][a-zA-Z0-9+.-]*:")  # http:, https:, mailto:, ...
@@ -183,8 +184,7 @@ def self_test():
     if links != [(1, False, "a.md#b"), (1, True, "f.png")]:
         failed.append(("links", links, None))
         print(f"FAIL links found: {links}")
-    # a small tree: one good link of each kind, one broken anchor, one missing image, one missing file
-    import tempfile
+    # a small tree: a good link of each kind, a broken anchor, a missing image and file
     with tempfile.TemporaryDirectory() as root:
         os.makedirs(os.path.join(root, "doc", "figures"))
         open(os.path.join(root, "doc", "figures", "a.png"), "w").close()
