@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Residual lobe of prm/disk_rolling.prm against where the die stops relative to the mesh
-# (issue 12; doc/scenes/disk_rolling.md, "The lobe depends on where the die stops").
+# (issue 12; doc/studies/disk_rolling.md, "The lobe depends on where the die stops").
 # Each level runs the graded family at 2304 rolling steps per revolution (step-converged to 0.06 %
 # of the lobe at level 4) with the die start (and so its stop) rotated by k eighths of a rim face
 # (a face spans 15 / 2^level degrees), then benchmarks/convergence/disk_lobe_phase.py reads the lobe
