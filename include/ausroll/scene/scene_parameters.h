@@ -15,6 +15,7 @@
 #include <ausroll/mechanics/model_parameters.h>
 #include <ausroll/solver/loading_parameters.h>
 #include <ausroll/solver/solver_parameters.h>
+#include <ausroll/thermal/thermal_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -41,6 +42,7 @@ namespace ausroll::scene
     solver::SolverParameters               solver;                 ///< `Solver`
     io::OutputParameters                   output;                 ///< `Output`
     io::PostprocessParameters              postprocess;            ///< `Postprocess`
+    thermal::ThermalParameters             thermal;                ///< `Thermal`
     /** Every entry "Section/Entry" -> value as parsed (stored in checkpoints, compared on resume).
      */
     std::map<std::string, std::string> entries;
