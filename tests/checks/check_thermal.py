@@ -23,6 +23,14 @@ clamped      the same block at 100 C held at x = 10 in x: sigma_xx = -E alpha dT
              strain, 1e-6: Newton tolerance), lateral corner displacement (1 + nu) alpha dT (5, 4).
 plane strain the strip heated uniformly to 120 C, held in x at both ends: sigma_xx =
              -E alpha dT / (1 - nu) (eps_zz = 0), reaction on x = 20 per mm thickness; 1e-6.
+cylinder     the thick cylinder of prm/thick_cylinder.prm (a = 100, b = 200 mm, plane strain,
+             elastic) with its inner surface at 120 C and its outer at 20 C = T_ref: the steady
+             logarithmic profile (3 backward-Euler steps of 1e5 s: the slowest mode decays by
+             1e-9) and Timoshenko & Goodier's closed-form thermal stresses (Theory of Elasticity,
+             3rd ed., sec. 151; sigma_z = nu (sigma_r + sigma_theta) - E alpha T for eps_z = 0)
+             along the radial probe within 0.5 % of the largest stress (measured 2026-12-07:
+             0.28 %, at the inner surface where the probe extrapolates the quadrature points);
+             the heat flow through the quarter, (pi / 2) k dT / ln(b/a), to 1e-6.
 np2          the conduction run on 2 MPI ranks: every history column within 1e-8 (relative to the
              column's largest magnitude) of the serial run (different partition, same algebra;
              AMG-preconditioned CG to 1e-12).
@@ -111,7 +119,7 @@ def conduction_error(ausroll, prm, steps, directory, settings=()):
 def main():
     ausroll, source = sys.argv[1], sys.argv[2]
     cases = sys.argv[3:] or ["conduction", "adiabatic", "free", "clamped", "plane_strain",
-                             "conductance", "friction", "np2", "resume"]
+                             "cylinder", "conductance", "friction", "np2", "resume"]
     scenes = os.path.join(source, "tests", "checks", "scenes")
     strip = os.path.join(scenes, "thermal_conduction.prm")
     block = os.path.join(scenes, "thermal_block_3d.prm")
@@ -200,6 +208,37 @@ def main():
               f"{expected:.6f}")
         checks("plane strain: |F_x| = E alpha dT / (1 - nu) h to 1e-6",
                abs(abs(row["reaction_1_x"]) - expected) < 1e-6 * expected)
+
+    if "cylinder" in cases:
+        run(ausroll, os.path.join(source, "prm", "thick_cylinder.prm"), [
+            "Boundary conditions/Condition 0/Value=0", "Material/Yield criterion=none",
+            "Thermal/Enabled=true", f"Thermal/Thermal expansion={ALPHA}", "Thermal/Number of conditions=2",
+            "Thermal/Condition 0/Boundary id=0", "Thermal/Condition 0/Type=temperature",
+            "Thermal/Condition 0/Value=120", "Thermal/Condition 1/Boundary id=1",
+            "Thermal/Condition 1/Type=temperature", "Thermal/Condition 1/Value=20", "Loading/End time=3e5",
+            "Loading/Number of steps=3", "Output/Interval=3", "Output/Verbosity=quiet"], "cylinder")
+        a, b, dT, e = 100.0, 200.0, 100.0, 210000.0
+        log_ba = math.log(b / a)
+        scale = ALPHA * e * dT / (2 * (1 - NU) * log_ba)
+        ratio = a * a / (b * b - a * a)
+        with open(os.path.join("cylinder", "probe_radial_0001.csv")) as f:
+            probe = list(csv.DictReader(f))
+        largest, error = 0.0, 0.0
+        for row in probe:
+            r = float(row["x"])
+            s_r = scale * (-math.log(b / r) - ratio * (1 - b * b / (r * r)) * log_ba)
+            s_t = scale * (1 - math.log(b / r) - ratio * (1 + b * b / (r * r)) * log_ba)
+            s_z = NU * (s_r + s_t) - ALPHA * e * dT * math.log(b / r) / log_ba
+            largest = max(largest, abs(s_r), abs(s_t), abs(s_z))
+            error = max(error, abs(float(row["stress_xx"]) - s_r), abs(float(row["stress_yy"]) - s_t),
+                        abs(float(row["stress_zz"]) - s_z))
+        heat = last("cylinder")["heat_condition_0"]
+        exact_heat = math.pi / 2 * 45.0 * dT / log_ba
+        print(f"cylinder: largest stress deviation {error:.4f} MPa of {largest:.2f} MPa "
+              f"({error / largest:.2e}); heat flow {heat:.4f}, exact {exact_heat:.4f} N mm/s")
+        checks("cylinder: Timoshenko thermal stresses within 0.5 %", error < 0.005 * largest)
+        checks("cylinder: steady heat flow (pi/2) k dT / ln(b/a) to 1e-6",
+               abs(heat - exact_heat) < 1e-6 * exact_heat)
 
     slide = os.path.join(scenes, "block_slide.prm")
     thermal_on = ["Thermal/Enabled=true", "Thermal/Thermal expansion=0", "Thermal/Initial temperature=20",
