@@ -201,11 +201,13 @@ namespace ausroll::thermal
     {
       matrix = 0.;
       rhs = 0.;
+      balance.plastic_heat = 0.; // summed in this pass
     }
     else
+    {
       *residual = 0.;
-    balance.plastic_heat = 0.;
-    std::fill(balance.boundary_heat.begin(), balance.boundary_heat.end(), 0.);
+      std::fill(balance.boundary_heat.begin(), balance.boundary_heat.end(), 0.); // and in this
+    }
 
     for (const auto &cell : dof_handler.active_cell_iterators())
     {

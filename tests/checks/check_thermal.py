@@ -150,7 +150,13 @@ def main():
             spread = float(row["T_max"]) - float(row["T_min"])
             worst = max(worst, spread / max(expected - 20.0, 1e-300) if a > 0 else spread)
         final = float(rows[-1]["T_mean"]) - 20.0
-        print(f"adiabatic: temperature rise {final:.6f} K, worst relative deviation {worst:.2e}")
+        # the reported plastic heating rate integrates to the heat content of the block (200 mm^3)
+        heat = sum(float(r["heat_plastic"]) * (float(r["time"]) - float(p["time"]))
+                   for p, r in zip(rows, rows[1:]))
+        content = RHO_C * final * 200.0
+        print(f"adiabatic: temperature rise {final:.6f} K, worst relative deviation {worst:.2e}; "
+              f"plastic heat {heat:.6f}, heat content {content:.6f} N mm")
+        checks("adiabatic: int heat_plastic dt = rho c dT V to 1e-6", abs(heat - content) < 1e-6 * content)
         checks("adiabatic: dT = beta W_p / (rho c) to 1e-6, homogeneous", worst < 1e-6 and final > 0.3)
 
     free_settings = ["Boundary conditions/Number of conditions=3", "Thermal/Initial temperature=120",
