@@ -60,10 +60,61 @@ namespace ausroll::scene
     ++system.assembly_cache.state;
   }
 
-  template void Scene<2>::setup_thermal();
-  template void Scene<2>::initialize_temperature();
-  template void Scene<2>::thermal_step(const solver::LoadStep &);
-  template void Scene<3>::setup_thermal();
-  template void Scene<3>::initialize_temperature();
-  template void Scene<3>::thermal_step(const solver::LoadStep &);
+  template <int dim>
+  solver::NewtonResult Scene<dim>::iterate_coupling(const solver::NewtonResult &first)
+  {
+    if (parameters.coupling.iterations <= 1 || !first.converged)
+      return first;
+    solver::NewtonResult total = first;
+    solver::LoadStep     step;
+    step.t_start = step_start_time;
+    step.time = time;
+    for (unsigned int k = 1;; ++k)
+    {
+      thermal_step(step);
+      thermal_current = true;
+      newton_log << "  coupling: heat solve " << k << ", largest temperature change "
+                 << thermal->last_change << std::endl;
+      if (thermal->last_change <= parameters.coupling.tolerance
+          || k >= parameters.coupling.iterations)
+        return total;
+      // the mechanical step again, at the new temperature
+      thermal->set_point_temperatures(system.material_points, true);
+      ++system.assembly_cache.state;
+      const solver::NewtonResult again = newton.solve(*equilibrium, newton_log);
+      thermal_current = false;
+      total.iterations += again.iterations;
+      total.outer_passes += again.outer_passes;
+      total.linear_iterations += again.linear_iterations;
+      total.residual = again.residual;
+      if (!again.converged)
+      {
+        total.converged = false;
+        total.reason = "coupling iteration " + std::to_string(k) + ": " + again.reason;
+        return total;
+      }
+    }
+  }
+
+  template <int dim>
+  void Scene<dim>::restore_temperature()
+  {
+    if (parameters.coupling.iterations <= 1)
+      return; // the field changes only when a step is accepted
+    thermal->restore();
+    thermal->set_point_temperatures(system.material_points, true);
+    ++system.assembly_cache.state;
+    thermal_current = false;
+  }
+
+  template void                 Scene<2>::setup_thermal();
+  template void                 Scene<2>::initialize_temperature();
+  template void                 Scene<2>::thermal_step(const solver::LoadStep &);
+  template solver::NewtonResult Scene<2>::iterate_coupling(const solver::NewtonResult &);
+  template void                 Scene<2>::restore_temperature();
+  template solver::NewtonResult Scene<3>::iterate_coupling(const solver::NewtonResult &);
+  template void                 Scene<3>::restore_temperature();
+  template void                 Scene<3>::setup_thermal();
+  template void                 Scene<3>::initialize_temperature();
+  template void                 Scene<3>::thermal_step(const solver::LoadStep &);
 } // namespace ausroll::scene

@@ -212,6 +212,8 @@ namespace ausroll::scene
   void Scene<dim>::commit_step(const bool new_step)
   {
     system.commit_step(new_step);
+    if (thermal)
+      thermal->commit();
     contact.commit(new_step);
     equilibrium->commit();
   }
@@ -331,7 +333,7 @@ namespace ausroll::scene
   unsigned int Scene<dim>::accept_step(const solver::LoadStep &step)
   {
     const unsigned int status_changes = contact.active() ? contact.n_changed_statuses() : 0;
-    if (thermal)
+    if (thermal && !thermal_current)
       thermal_step(step);
     commit_step();
     step_number = step.number;

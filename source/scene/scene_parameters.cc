@@ -26,6 +26,7 @@ namespace ausroll::scene
     io::OutputParameters::declare_parameters(prm);
     io::PostprocessParameters::declare_parameters(prm);
     thermal::ThermalParameters::declare_parameters(prm);
+    CouplingParameters::declare_parameters(prm);
   }
 
   void SceneParameters::parse_parameters(ParameterHandler &prm, const std::string &input_directory)
@@ -46,6 +47,7 @@ namespace ausroll::scene
     output.parse_parameters(prm);
     postprocess.parse_parameters(prm);
     thermal.parse_parameters(prm, input_directory);
+    coupling.parse_parameters(prm, thermal.enabled);
   }
 
   SceneParameters read_parameter_file(const std::string                    &filename,

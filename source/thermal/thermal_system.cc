@@ -133,6 +133,7 @@ namespace ausroll::thermal
     SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, relevant_dofs);
     matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
     temperature.reinit(owned_dofs, relevant_dofs, comm);
+    committed_temperature.reinit(owned_dofs, relevant_dofs, comm);
     temperature_rate.reinit(owned_dofs, relevant_dofs, comm);
     rhs.reinit(owned_dofs, comm);
   }
@@ -159,7 +160,20 @@ namespace ausroll::thermal
     Vector owned(owned_dofs, comm);
     VectorTools::interpolate(mapping, dof_handler, *initial, owned);
     temperature = owned;
+    committed_temperature = owned;
     temperature_rate = 0.;
+  }
+
+  template <int dim>
+  void ThermalSystem<dim>::commit()
+  {
+    committed_temperature = temperature;
+  }
+
+  template <int dim>
+  void ThermalSystem<dim>::restore()
+  {
+    temperature = committed_temperature;
   }
 
   template <int dim>
@@ -411,7 +425,9 @@ namespace ausroll::thermal
                                       const std::vector<Contact> &contacts)
   {
     AssertThrow(dt > 0., ExcMessage("ThermalSystem::solve_step: step size must be positive"));
-    const Vector T_old = temperature;
+    const Vector &T_old = committed_temperature;
+    Vector        previous(owned_dofs, comm);
+    previous = temperature;
     make_constraints(t);
     assemble(t, dt, displacement_dofs, displacement, points, T_old, contacts, nullptr);
 
@@ -439,6 +455,8 @@ namespace ausroll::thermal
     }
     constraints.distribute(solution);
     temperature = solution;
+    previous -= solution;
+    last_change = previous.linfty_norm();
     Vector rate(owned_dofs, comm);
     rate = solution;
     Vector old_owned(owned_dofs, comm);
@@ -513,6 +531,7 @@ namespace ausroll::thermal
     hanging.close();
     hanging.distribute(owned);
     temperature = owned;
+    committed_temperature = owned;
     temperature_rate = 0.;
   }
 
@@ -530,6 +549,7 @@ namespace ausroll::thermal
     parallel::distributed::SolutionTransfer<dim, Vector> loader(dof_handler);
     loader.deserialize(owned);
     temperature = owned;
+    committed_temperature = owned;
     temperature_rate = 0.;
   }
 

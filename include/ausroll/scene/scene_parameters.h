@@ -13,6 +13,7 @@
 #include <ausroll/material/material_parameters.h>
 #include <ausroll/mechanics/boundary_conditions.h>
 #include <ausroll/mechanics/model_parameters.h>
+#include <ausroll/scene/coupling_parameters.h>
 #include <ausroll/solver/loading_parameters.h>
 #include <ausroll/solver/solver_parameters.h>
 #include <ausroll/thermal/thermal_parameters.h>
@@ -43,6 +44,7 @@ namespace ausroll::scene
     io::OutputParameters                   output;                 ///< `Output`
     io::PostprocessParameters              postprocess;            ///< `Postprocess`
     thermal::ThermalParameters             thermal;                ///< `Thermal`
+    CouplingParameters                     coupling;               ///< `Coupling`
     /** Every entry "Section/Entry" -> value as parsed (stored in checkpoints, compared on resume).
      */
     std::map<std::string, std::string> entries;

@@ -108,6 +108,12 @@ namespace ausroll::thermal
                     const PointStorage            &points,
                     const std::vector<Contact>    &contacts);
 
+    /** Accept the last solve: committed_temperature = temperature. */
+    void commit();
+
+    /** Discard solves since the last commit: temperature = committed_temperature. */
+    void restore();
+
     /** Write the temperature at the material points into their trial states (and, with
         @p committed_too, their committed states). */
     void set_point_temperatures(PointStorage &points, const bool committed_too) const;
@@ -130,13 +136,17 @@ namespace ausroll::thermal
     const ThermalParameters &parameters; ///< `Thermal`
     MPI_Comm                 comm;       ///< communicator
 
-    dealii::FE_Q<dim>       fe;               ///< scalar FE_Q(degree)
-    dealii::DoFHandler<dim> dof_handler;      ///< temperature DoFs
-    dealii::IndexSet        owned_dofs;       ///< locally owned
-    dealii::IndexSet        relevant_dofs;    ///< locally relevant
-    Vector                  temperature;      ///< T at the last step (ghosted)
-    Vector                  temperature_rate; ///< (T - T_n) / dt of the last step (ghosted)
-    Balance                 balance;          ///< heat flows of the last step
+    dealii::FE_Q<dim>       fe;            ///< scalar FE_Q(degree)
+    dealii::DoFHandler<dim> dof_handler;   ///< temperature DoFs
+    dealii::IndexSet        owned_dofs;    ///< locally owned
+    dealii::IndexSet        relevant_dofs; ///< locally relevant
+    Vector                  temperature;   ///< T of the last solve (ghosted)
+    /** T of the last converged (committed) step, T_n of the next solve (ghosted). */
+    Vector committed_temperature;
+    /** Largest nodal change of T made by the last solve (against the T before it). */
+    double  last_change = 0.;
+    Vector  temperature_rate; ///< (T - T_n) / dt of the last step (ghosted)
+    Balance balance;          ///< heat flows of the last step
 
   private:
     /** Assemble the backward-Euler system (@p residual null) or, with @p residual, the
