@@ -1141,6 +1141,39 @@ namespace ausroll::contact
     }
   }
 
+  template <int dim>
+  std::vector<typename ContactOperator<dim>::HeatContact>
+  ContactOperator<dim>::heat_contacts() const
+  {
+    std::vector<HeatContact> contacts;
+    for (const Node &n : nodes)
+    {
+      if (!n.owned || n.current.status == ContactStatus::open || n.current.die < 0)
+        continue;
+      HeatContact c;
+      c.dof = n.dofs[0];
+      c.area = n.area;
+      c.die = n.current.die;
+      if (n.current.status == ContactStatus::slip && n.committed.status != ContactStatus::open
+          && n.committed.die == n.current.die)
+      {
+        // slip of the step relative to the die, in die coordinates: 2D along the arc length,
+        // 3D the chord between the converged die points
+        double slip = 0.;
+        if constexpr (dim == 2)
+          slip = std::abs(die_coordinate_difference(c.die, n.projection.s, n.committed.s));
+        else
+          slip = (n.projection.local_point - n.committed.start).norm();
+        double Rt = 0.;
+        for (const double r : n.current.Rt)
+          Rt += r * r;
+        c.friction_work = std::sqrt(Rt) * slip;
+      }
+      contacts.push_back(c);
+    }
+    return contacts;
+  }
+
   template class ContactOperator<2>;
   template class ContactOperator<3>;
 } // namespace ausroll::contact

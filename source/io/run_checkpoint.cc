@@ -1,3 +1,4 @@
+#include <ausroll/core/exceptions.h>
 #include <ausroll/io/checkpoint.h>
 #include <ausroll/io/run_checkpoint.h>
 
@@ -16,7 +17,8 @@ namespace ausroll::io
                         adaptivity::MaterialPointTransfer<dim>   &points,
                         const RunState                           &state,
                         const std::map<std::string, std::string> &entries,
-                        const std::string                        &output_directory)
+                        const std::string                        &output_directory,
+                        thermal::ThermalSystem<dim>              *thermal)
   {
     using Vector = TrilinosWrappers::MPI::Vector;
     const CheckpointDirectory checkpoints(output_directory, system.comm);
@@ -29,6 +31,8 @@ namespace ausroll::io
     transfer.prepare_for_serialization(
         std::vector<const Vector *>{&system.solution_ghosted, &previous_ghosted});
     points.prepare();
+    if (thermal != nullptr)
+      thermal->prepare_serialization();
     system.triangulation.save(dir + "/mesh");
 
     CheckpointMetadata meta;
@@ -37,6 +41,7 @@ namespace ausroll::io
     meta.values["dt"] = {state.step_size};
     meta.values["last_step_size"] = {state.last_step_size};
     meta.values["previous_solution"] = {1.};
+    meta.values["temperature"] = {thermal != nullptr ? 1. : 0.};
     meta.set_parameters(entries);
     meta.values["output_counter"] = {double(state.output_counter)};
     meta.values["last_output_step"] = {double(state.last_output_step)};
@@ -74,7 +79,8 @@ namespace ausroll::io
   template <int dim>
   void load_checkpoint_vectors(mechanics::MechanicalSystem<dim>       &system,
                                adaptivity::MaterialPointTransfer<dim> &points,
-                               const std::string                      &directory)
+                               const std::string                      &directory,
+                               thermal::ThermalSystem<dim>            *thermal)
   {
     CheckpointMetadata meta;
     meta.read(directory + "/metadata.txt");
@@ -90,6 +96,15 @@ namespace ausroll::io
     system.step_start = system.solution;
     points.prepare();
     points.unpack();
+    if (thermal != nullptr)
+    {
+      if (meta.values.count("temperature") == 0 || meta.get("temperature") != 1.)
+        throw InputError(
+            directory
+            + ": the checkpoint has no temperature field (it was written "
+              "by an isothermal run; Thermal/Enabled must match the run that wrote it)");
+      thermal->deserialize();
+    }
   }
 
   RunState read_run_state(const std::string &directory)
@@ -120,12 +135,14 @@ namespace ausroll::io
                                         adaptivity::MaterialPointTransfer<2> &,
                                         const RunState &,
                                         const std::map<std::string, std::string> &,
-                                        const std::string &);
+                                        const std::string &,
+                                        thermal::ThermalSystem<2> *);
   template void        write_checkpoint(mechanics::MechanicalSystem<3> &,
                                         adaptivity::MaterialPointTransfer<3> &,
                                         const RunState &,
                                         const std::map<std::string, std::string> &,
-                                        const std::string &);
+                                        const std::string &,
+                                        thermal::ThermalSystem<3> *);
   template std::string load_checkpoint_mesh(mechanics::MechanicalSystem<2> &,
                                             const std::map<std::string, std::string> &,
                                             const std::string &);
@@ -134,8 +151,10 @@ namespace ausroll::io
                                             const std::string &);
   template void        load_checkpoint_vectors(mechanics::MechanicalSystem<2> &,
                                                adaptivity::MaterialPointTransfer<2> &,
-                                               const std::string &);
+                                               const std::string &,
+                                               thermal::ThermalSystem<2> *);
   template void        load_checkpoint_vectors(mechanics::MechanicalSystem<3> &,
                                                adaptivity::MaterialPointTransfer<3> &,
-                                               const std::string &);
+                                               const std::string &,
+                                               thermal::ThermalSystem<3> *);
 } // namespace ausroll::io

@@ -3,6 +3,7 @@
 #include <ausroll/material/finite_strain_log_model.h>
 #include <ausroll/material/plane_stress_driver.h>
 #include <ausroll/material/small_strain_model.h>
+#include <ausroll/material/thermal_expansion_model.h>
 #include <ausroll/material/total_lagrangian_model.h>
 #include <ausroll/material/updated_lagrangian_jaumann_model.h>
 
@@ -37,9 +38,11 @@ namespace ausroll::material
     return "";
   }
 
-  std::unique_ptr<ConstitutiveModel> create_constitutive_model(const KinematicsType      kinematics,
-                                                               const MaterialParameters &material,
-                                                               const bool plane_stress)
+  std::unique_ptr<ConstitutiveModel>
+  create_constitutive_model(const KinematicsType              kinematics,
+                            const MaterialParameters         &material,
+                            const bool                        plane_stress,
+                            const ThermalExpansionParameters *thermal)
   {
     std::unique_ptr<ConstitutiveModel> model;
     switch (kinematics)
@@ -59,6 +62,9 @@ namespace ausroll::material
     }
     if (!model)
       throw InputError("Model/Kinematics: unknown kinematics");
+    if (thermal != nullptr)
+      model = std::make_unique<ThermalExpansionModel>(
+          std::move(model), thermal->expansion, thermal->reference_temperature);
     if (plane_stress)
       model = std::make_unique<PlaneStressDriver>(std::move(model));
     return model;

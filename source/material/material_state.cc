@@ -36,6 +36,8 @@ namespace ausroll::material
       for (unsigned int j = 0; j < 3; ++j)
         data.push_back(deformation_gradient[i][j]);
     data.push_back(equivalent_plastic_strain);
+    data.push_back(temperature);
+    data.push_back(plastic_work);
   }
 
   void MaterialState::unpack(const double *data)
@@ -47,7 +49,9 @@ namespace ausroll::material
     for (unsigned int i = 0; i < 3; ++i)
       for (unsigned int j = 0; j < 3; ++j)
         deformation_gradient[i][j] = *data++;
-    equivalent_plastic_strain = *data;
+    equivalent_plastic_strain = *data++;
+    temperature = *data++;
+    plastic_work = *data;
   }
 
   double MaterialState::von_mises_stress() const

@@ -9,7 +9,7 @@ namespace ausroll::material
   using dealii::Tensor;
 
   PlaneStressDriver::PlaneStressDriver(std::unique_ptr<ConstitutiveModel> model)
-      : inner(std::move(model))
+      : WrappedModel(std::move(model))
   {
   }
 

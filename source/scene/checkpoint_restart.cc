@@ -24,8 +24,12 @@ namespace ausroll::scene
                              equilibrium->largest_reference_force,
                              contact.pack_state(),
                              postprocessors->vtu_records()};
-    io::write_checkpoint(
-        system, *point_transfer, state, parameters.entries, parameters.output.directory);
+    io::write_checkpoint(system,
+                         *point_transfer,
+                         state,
+                         parameters.entries,
+                         parameters.output.directory,
+                         thermal.get());
     log << "  checkpoint written after step " << step_number << std::endl;
   }
 

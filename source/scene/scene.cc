@@ -3,6 +3,7 @@
 #include <ausroll/geometry/workpiece.h>
 #include <ausroll/io/output_directory.h>
 #include <ausroll/io/postprocess/standard_set.h>
+#include <ausroll/io/postprocess/temperature.h>
 #include <ausroll/io/run_checkpoint.h>
 #include <ausroll/io/run_log.h>
 #include <ausroll/mechanics/distortion_check.h>
@@ -32,10 +33,11 @@ namespace ausroll::scene
       , timer(std::make_unique<TimerOutput>(comm, log, TimerOutput::never, TimerOutput::wall_times))
       , system(comm, prm.model.degree)
       , kinematics(prm.model.planar_model, prm.model.thickness)
-      , model(material::create_constitutive_model(prm.model.kinematics,
-                                                  prm.material,
-                                                  prm.model.planar_model
-                                                      == mechanics::PlanarModel::plane_stress))
+      , model(material::create_constitutive_model(
+            prm.model.kinematics,
+            prm.material,
+            prm.model.planar_model == mechanics::PlanarModel::plane_stress,
+            prm.thermal.enabled ? &prm.thermal.expansion : nullptr))
       , boundary_conditions(prm.boundary_conditions)
       , contact(prm.contact)
       , contact_strategy(contact::make_status_strategy(prm.contact, contact, contact.active()))
@@ -78,6 +80,7 @@ namespace ausroll::scene
       system.setup_system();
       setup_dof_dependents();
       system.initialize_material_points(assembler->quadrature().size());
+      setup_thermal();
       point_transfer = std::make_unique<adaptivity::MaterialPointTransfer<dim>>(
           system.triangulation,
           system.material_points,
@@ -86,7 +89,7 @@ namespace ausroll::scene
                                                     : adaptivity::TransferMethod::nearest_point,
           [this](material::MaterialState &state) { model->make_admissible(state); });
       if (resuming)
-        io::load_checkpoint_vectors(system, *point_transfer, checkpoint_directory);
+        io::load_checkpoint_vectors(system, *point_transfer, checkpoint_directory, thermal.get());
       setup_postprocessing();
 
       if (!resuming)
@@ -126,12 +129,16 @@ namespace ausroll::scene
   void Scene<dim>::setup_postprocessing()
   {
     if (!postprocessors)
+    {
       postprocessors = io::make_standard_postprocessors<dim>(parameters.output,
                                                              parameters.postprocess,
                                                              parameters.loading.end_time,
                                                              parameters.material.yield_stress,
                                                              parameters.model.quadrature_points,
                                                              comm);
+      if (thermal) // its columns after the mechanical ones
+        postprocessors->add(std::make_unique<io::postprocess::TemperatureField<dim>>());
+    }
     postprocessors->initialize(postprocess_input());
   }
 
@@ -162,13 +169,23 @@ namespace ausroll::scene
       const std::vector<double> contact_state = contact.pack_state();
       linear_solver.matrix_pattern_changed();
       // (the counts for the log: cells split and cells merged into their parents)
-      std::tie(n_refined, n_coarsened)
-          = system.execute_refinement([this]() { point_transfer->prepare(); },
-                                      [this]()
-                                      {
-                                        setup_dof_dependents();
-                                        point_transfer->unpack();
-                                      });
+      std::tie(n_refined, n_coarsened) = system.execute_refinement(
+          [this]()
+          {
+            point_transfer->prepare();
+            if (thermal)
+              thermal->prepare_refinement();
+          },
+          [this]()
+          {
+            setup_dof_dependents();
+            point_transfer->unpack();
+            if (thermal)
+            {
+              thermal->setup();
+              thermal->finish_refinement();
+            }
+          });
       system.rebase_material_points(*assembler, *model);
       contact.unpack_state(contact_state);
       setup_postprocessing();
@@ -195,6 +212,8 @@ namespace ausroll::scene
   void Scene<dim>::commit_step(const bool new_step)
   {
     system.commit_step(new_step);
+    if (thermal)
+      thermal->commit();
     contact.commit(new_step);
     equilibrium->commit();
   }
@@ -203,19 +222,21 @@ namespace ausroll::scene
   io::PostprocessInput<dim> Scene<dim>::postprocess_input(const solver::NewtonResult *result,
                                                           const unsigned int cutbacks) const
   {
-    return {system.mapping,
-            system.dof_handler,
-            system.solution_ghosted,
-            system.residual,
-            system.material_points,
-            *model,
-            boundary_conditions,
-            contact,
-            time,
-            step_number,
-            result ? result->iterations : 0,
-            cutbacks,
-            wall_clock.wall_time()};
+    io::PostprocessInput<dim> input{system.mapping,
+                                    system.dof_handler,
+                                    system.solution_ghosted,
+                                    system.residual,
+                                    system.material_points,
+                                    *model,
+                                    boundary_conditions,
+                                    contact,
+                                    time,
+                                    step_number,
+                                    result ? result->iterations : 0,
+                                    cutbacks,
+                                    wall_clock.wall_time()};
+    input.thermal = thermal.get();
+    return input;
   }
 
   template <int dim>
@@ -312,6 +333,8 @@ namespace ausroll::scene
   unsigned int Scene<dim>::accept_step(const solver::LoadStep &step)
   {
     const unsigned int status_changes = contact.active() ? contact.n_changed_statuses() : 0;
+    if (thermal && !thermal_current)
+      thermal_step(step);
     commit_step();
     step_number = step.number;
     const io::HistoryRow row
@@ -404,6 +427,7 @@ namespace ausroll::scene
       system.step_start = 0.;
       system.start_step(0.); // solution = step_start
       time = 0.;
+      initialize_temperature();
       std::string message;
       if (!equilibrium->assemble(false, message))
         throw RunFailure("initial state: " + message);
@@ -411,6 +435,8 @@ namespace ausroll::scene
       for (unsigned int cycle = 0; cycle < parameters.adaptivity.initial_cycles; ++cycle)
         if (!adapt_mesh(std::min(nominal_dt, parameters.loading.end_time)))
           break;
+      if (parameters.adaptivity.initial_cycles > 0)
+        initialize_temperature(); // the initial field on the refined mesh, not interpolated
       solver::NewtonResult initial;
       initial.converged = true;
       history->add_row(postprocessors->history_row(postprocess_input(&initial, 0)));

@@ -25,6 +25,8 @@ namespace ausroll::scene
     solver::SolverParameters::declare_parameters(prm);
     io::OutputParameters::declare_parameters(prm);
     io::PostprocessParameters::declare_parameters(prm);
+    thermal::ThermalParameters::declare_parameters(prm);
+    CouplingParameters::declare_parameters(prm);
   }
 
   void SceneParameters::parse_parameters(ParameterHandler &prm, const std::string &input_directory)
@@ -44,6 +46,8 @@ namespace ausroll::scene
     solver.parse_parameters(prm);
     output.parse_parameters(prm);
     postprocess.parse_parameters(prm);
+    thermal.parse_parameters(prm, input_directory);
+    coupling.parse_parameters(prm, thermal.enabled);
   }
 
   SceneParameters read_parameter_file(const std::string                    &filename,

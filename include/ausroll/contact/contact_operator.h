@@ -186,6 +186,20 @@ namespace ausroll::contact
     /** The contact of die @p k at the current iterate (collective: call on all ranks). */
     DieContact die_contact(const unsigned int k) const;
 
+    /** A closed contact node as the heat equation sees it (ContactOperator::heat_contacts()). */
+    struct HeatContact
+    {
+      dealii::types::global_dof_index dof = 0;   ///< its displacement DoF of component x
+      double                          area = 0.; ///< tributary area (as the contact forces)
+      unsigned int                    die = 0;   ///< the die it touches
+      /** Frictional work of the step, |R_t| times the slip relative to the die (N mm): nonzero
+          for a node that slipped and was closed on the same die at the last commit. */
+      double friction_work = 0.;
+    };
+
+    /** The locally owned closed nodes of the current (converged, not yet committed) state. */
+    std::vector<HeatContact> heat_contacts() const;
+
     /** Write `contact` CSV (one row per candidate node that is closed or within 1 element of a
      * die). */
     void write_csv(const std::string &filename, const MPI_Comm comm) const;

@@ -11,6 +11,7 @@
 
 #include <ausroll/adaptivity/material_point_transfer.h>
 #include <ausroll/mechanics/mechanical_system.h>
+#include <ausroll/thermal/thermal_system.h>
 
 #include <map>
 #include <string>
@@ -43,7 +44,8 @@ namespace ausroll::io
                         adaptivity::MaterialPointTransfer<dim>   &points,
                         const RunState                           &state,
                         const std::map<std::string, std::string> &entries,
-                        const std::string                        &output_directory);
+                        const std::string                        &output_directory,
+                        thermal::ThermalSystem<dim>              *thermal = nullptr);
 
   /**
    * Resume: load the refined, partitioned mesh of the latest checkpoint of @p output_directory
@@ -64,7 +66,8 @@ namespace ausroll::io
   template <int dim>
   void load_checkpoint_vectors(mechanics::MechanicalSystem<dim>       &system,
                                adaptivity::MaterialPointTransfer<dim> &points,
-                               const std::string                      &directory);
+                               const std::string                      &directory,
+                               thermal::ThermalSystem<dim>            *thermal = nullptr);
 
   /** The RunState stored in the checkpoint @p directory. */
   RunState read_run_state(const std::string &directory);

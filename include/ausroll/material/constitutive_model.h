@@ -25,6 +25,8 @@ namespace ausroll::material
     finite_strain       ///< multiplicative J2 with logarithmic (Hencky) elastic strain
   };
 
+  struct ThermalExpansionParameters;
+
   /** Parse a `Model/Kinematics` value. */
   KinematicsType parse_kinematics(const std::string &name);
 
@@ -89,9 +91,12 @@ namespace ausroll::material
 
   /**
    * Build the model for `Model/Kinematics` = @p kinematics with the plasticity of subsection
-   * `Material`. With @p plane_stress the model is wrapped in a PlaneStressDriver.
+   * `Material`. With @p thermal (thermal scenes) the model is wrapped in a ThermalExpansionModel;
+   * with @p plane_stress the result is wrapped in a PlaneStressDriver.
    */
-  std::unique_ptr<ConstitutiveModel> create_constitutive_model(const KinematicsType      kinematics,
-                                                               const MaterialParameters &material,
-                                                               const bool plane_stress);
+  std::unique_ptr<ConstitutiveModel>
+  create_constitutive_model(const KinematicsType              kinematics,
+                            const MaterialParameters         &material,
+                            const bool                        plane_stress,
+                            const ThermalExpansionParameters *thermal = nullptr);
 } // namespace ausroll::material

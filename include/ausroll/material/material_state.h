@@ -30,6 +30,12 @@ namespace ausroll::material
    *   the hoop stretch of axisymmetric models); F_n of the next step for the updated Lagrangian
    *   and finite strain models.
    * - @ref equivalent_plastic_strain: accumulated equivalent plastic strain alpha.
+   * - @ref temperature: the temperature the state was evaluated at (thermal scenes: the
+   *   temperature field at this point at the start of the step, written by the thermal field;
+   *   isothermal scenes leave it at 0 and no model reads it).
+   * - @ref plastic_work: accumulated plastic work per unit reference volume, int tau_vm d alpha
+   *   (N mm / mm^3 = MPa; thermal scenes only: ThermalExpansionModel; the source of plastic
+   *   heating).
    */
   struct MaterialState
   {
@@ -39,12 +45,14 @@ namespace ausroll::material
     dealii::SymmetricTensor<2, 3> elastic_left_cauchy_green;      ///< b_e (finite strain model)
     dealii::Tensor<2, 3>          deformation_gradient;           ///< F at this state
     double                        equivalent_plastic_strain = 0.; ///< alpha
+    double                        temperature = 0.;  ///< temperature of the state (thermal)
+    double                        plastic_work = 0.; ///< int tau_vm d alpha (thermal)
 
     /** The undeformed, stress-free state: F = b_e = I, everything else zero. */
     MaterialState();
 
     /** Number of doubles written by pack(). */
-    static constexpr unsigned int n_packed_values = 6 * 4 + 9 + 1;
+    static constexpr unsigned int n_packed_values = 6 * 4 + 9 + 3;
 
     /** Append the state to @p data as n_packed_values doubles (mesh transfer, checkpoints). */
     void pack(std::vector<double> &data) const;

@@ -5,7 +5,7 @@
  */
 #pragma once
 
-#include <ausroll/material/constitutive_model.h>
+#include <ausroll/material/wrapped_model.h>
 
 namespace ausroll::material
 {
@@ -15,7 +15,7 @@ namespace ausroll::material
    * A_red = A - A[.,.,z,z] (x) A[z,z,.,.] / A[z,z,z,z], so that the global Newton iteration stays
    * quadratic. The out-of-plane shear components are zero in a planar problem.
    */
-  class PlaneStressDriver : public ConstitutiveModel
+  class PlaneStressDriver : public WrappedModel
   {
   public:
     /** Driver around the 3D model @p model. */
@@ -27,23 +27,7 @@ namespace ausroll::material
                   dealii::Tensor<2, 3>       &P,
                   dealii::Tensor<4, 3>       *tangent) const override;
 
-    bool is_small_strain() const override { return inner->is_small_strain(); }
-
-    /** The inner model's yield function. */
-    double yield_function(const MaterialState &state) const override
-    {
-      return inner->yield_function(state);
-    }
-
-    /** The inner model's projection. */
-    void make_admissible(MaterialState &state) const override { inner->make_admissible(state); }
-
     /** The inner model's rebase with the state's own out-of-plane stretch. */
     void rebase(MaterialState &state, const dealii::Tensor<2, 3> &F) const override;
-
-    const PlasticityModel &plasticity() const override { return inner->plasticity(); }
-
-  private:
-    std::unique_ptr<ConstitutiveModel> inner; ///< the 3D model
   };
 } // namespace ausroll::material

@@ -24,6 +24,7 @@
 #include <ausroll/solver/linear_solver.h>
 #include <ausroll/solver/load_stepper.h>
 #include <ausroll/solver/newton_solver.h>
+#include <ausroll/thermal/thermal_system.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -66,9 +67,16 @@ namespace ausroll::scene
     {
       time = t;
       system.start_step(predictor_ratio);
-      return newton.solve(*equilibrium, newton_log);
+      thermal_current = false;
+      const solver::NewtonResult result = newton.solve(*equilibrium, newton_log);
+      return thermal ? iterate_coupling(result) : result;
     }
-    void         restart_step() override { contact_strategy->restart_step(); }
+    void restart_step() override
+    {
+      contact_strategy->restart_step();
+      if (thermal)
+        restore_temperature();
+    }
     unsigned int release_after_failure() override
     {
       return contact_strategy->release_after_failure();
@@ -112,6 +120,24 @@ namespace ausroll::scene
     /** Build the postprocessors (first call) and initialize them on the current mesh (monitor
         points, reaction DoFs, probes). */
     void setup_postprocessing();
+    /** @name The temperature field (`Thermal/Enabled`; scene/coupling.cc) */
+    //@{
+    /** Build the temperature field on the mechanical mesh and quadrature (after
+        MechanicalSystem::setup_system()). */
+    void setup_thermal();
+    /** Temperature at t = 0 on the field and the material points (not when resuming). */
+    void initialize_temperature();
+    /** Isothermal split, thermal half: the heat equation over the converged mechanical @p step
+        (before the material points are committed), then the new temperature at the points. */
+    void thermal_step(const solver::LoadStep &step);
+    /** `Coupling/Iterations` > 1: after the mechanical solve @p result, heat solve and mechanics
+        at the new temperature in turn until the temperature settles; returns the Newton
+        statistics of all mechanical solves of the step. */
+    solver::NewtonResult iterate_coupling(const solver::NewtonResult &result);
+    /** After a failed attempt: the temperature of the step's start on the field and at the
+        material points (the repeated split may have changed them). */
+    void restore_temperature();
+    //@}
 
     SceneParameters parameters; ///< the input
     MPI_Comm        comm;       ///< communicator
@@ -136,6 +162,10 @@ namespace ausroll::scene
     contact::ContactOperator<dim>                contact;
     /** Curvature part of the slip-node tangent on curved dies (`Contact/Curvature tangent`). */
     contact::CurvedDieTangent<dim> curved_die_tangent;
+    /** The temperature field of a thermal scene (null: isothermal). */
+    std::unique_ptr<thermal::ThermalSystem<dim>> thermal;
+    /** The last heat solve belongs to the current mechanical solution (repeated split). */
+    bool thermal_current = false;
     /** Warns once when a boundary that is not a contact candidate passes through a die. */
     contact::NonCandidatePenetration<dim> non_candidate_penetration;
     /** Pseudo-time at the start of the current load step. */

@@ -13,8 +13,10 @@
 #include <ausroll/material/material_parameters.h>
 #include <ausroll/mechanics/boundary_conditions.h>
 #include <ausroll/mechanics/model_parameters.h>
+#include <ausroll/scene/coupling_parameters.h>
 #include <ausroll/solver/loading_parameters.h>
 #include <ausroll/solver/solver_parameters.h>
+#include <ausroll/thermal/thermal_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -41,6 +43,8 @@ namespace ausroll::scene
     solver::SolverParameters               solver;                 ///< `Solver`
     io::OutputParameters                   output;                 ///< `Output`
     io::PostprocessParameters              postprocess;            ///< `Postprocess`
+    thermal::ThermalParameters             thermal;                ///< `Thermal`
+    CouplingParameters                     coupling;               ///< `Coupling`
     /** Every entry "Section/Entry" -> value as parsed (stored in checkpoints, compared on resume).
      */
     std::map<std::string, std::string> entries;

@@ -26,6 +26,7 @@
 #include <ausroll/material/constitutive_model.h>
 #include <ausroll/mechanics/boundary_conditions.h>
 #include <ausroll/mechanics/material_point_storage.h>
+#include <ausroll/thermal/thermal_system.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
@@ -61,6 +62,8 @@ namespace ausroll::io
     unsigned int newton_iterations = 0; ///< Newton iterations of the last step
     unsigned int cutbacks = 0;          ///< cutbacks of the last step
     double       wall_seconds = 0.;     ///< wall time since the start of the run
+    /** The temperature field (thermal scenes; null when isothermal). */
+    const thermal::ThermalSystem<dim> *thermal = nullptr;
   };
 
   /**

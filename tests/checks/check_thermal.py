@@ -1,0 +1,343 @@
+#!/usr/bin/env python3
+"""Thermal verification checks (the temperature field, Thermal subsection), each against a closed
+form with its tolerance and the reason for it:
+
+conduction   a strip held at 120 C at x = 0, insulated elsewhere (scenes/thermal_conduction.prm),
+             against the erfc image series at t = 2 s; run with 40 and 20 steps. The error is the
+             time discretisation's (measured 2026-12-07: 20/40/80/160/640 steps give 0.688,
+             0.344, 0.172, 0.086, 0.0215 K; 20 or 80 cells instead of 40 change it by < 2e-4 K):
+             backward Euler is first order, so the error must halve with the step (ratio 1.9 to
+             2.1) and stay below 0.4 K (0.4 % of the temperature step) at 40 steps.
+adiabatic    the 3D block in homogeneous uniaxial compression (scenes/thermal_block_3d.prm), J2
+             with linear hardening, insulated: T = 20 + beta (sigma_0 a + H a^2 / 2) / (rho c) with
+             a = (E eps - sigma_0) / (E + H). The trapezoidal plastic work is exact for linear
+             hardening once plastic and the heat equation of a homogeneous source is exact, but the
+             first plastic step starts below the yield stress: its trapezoid misses
+             (sigma_0 - sigma_e) a_1 / 2. The check is run with the steps of the scene chosen
+             so that step 1 ends exactly at yield (then every plastic step is exact): 1e-6.
+free         the block heated to 120 C (T_ref = 20, alpha = 1.2e-5), free on its symmetry planes:
+             corner displacement (theta - 1) (10, 5, 4), reactions zero; small and finite
+             strain; 1e-9 (round-off of the Newton tolerance of the scene).
+clamped      the same block at 100 C held at x = 10 in x: sigma_xx = -E alpha dT (201.6 MPa, below
+             the yield stress 240), reaction F_x on x = 10 equal to E alpha dT 20 mm^2 (small
+             strain, 1e-6: Newton tolerance), lateral corner displacement (1 + nu) alpha dT (5, 4).
+plane strain the strip heated uniformly to 120 C, held in x at both ends: sigma_xx =
+             -E alpha dT / (1 - nu) (eps_zz = 0), reaction on x = 20 per mm thickness; 1e-6.
+cylinder     the thick cylinder of prm/thick_cylinder.prm (a = 100, b = 200 mm, plane strain,
+             elastic) with its inner surface at 120 C and its outer at 20 C = T_ref: the steady
+             logarithmic profile (3 backward-Euler steps of 1e5 s: the slowest mode decays by
+             1e-9) and Timoshenko & Goodier's closed-form thermal stresses (Theory of Elasticity,
+             3rd ed., sec. 151; sigma_z = nu (sigma_r + sigma_theta) - E alpha T for eps_z = 0)
+             along the radial probe within 0.5 % of the largest stress (measured 2026-12-07:
+             0.28 %, at the inner surface where the probe extrapolates the quadrature points);
+             the heat flow through the quarter, (pi / 2) k dT / ln(b/a), to 1e-6.
+coupling     the clamped block with all faces held at T = 20 + 80 t and a negligible heat capacity
+             (specific heat 1 instead of 4.6e8: the temperature is uniform at every step): with Coupling/Iterations = 1 the mechanics of step n sees T(t_n-1)
+             (reaction E alpha (T(t_n-1) - 20) A), with Iterations = 3 it sees T(t_n) and
+             stops after the second heat solve (the temperature no longer changes): 1e-6.
+np2          the conduction run on 2 MPI ranks: every history column within 1e-8 (relative to the
+             column's largest magnitude) of the serial run (different partition, same algebra;
+             AMG-preconditioned CG to 1e-12).
+conductance  an elastic block (10 x 5 mm, scenes/block_slide.prm) pressed by a flat die at 200 C
+             with h_c = 10 N/(mm s K), its base held at 20 C: the steady 1D state T_top =
+             (h_c T_die + (k/L) T_base) / (h_c + k/L), heat from the die h_c (T_die - T_top) 10 mm
+             = heat out through the base; 20 backward-Euler steps of 5 s decay the transient by
+             1e-17, and the steady linear profile is exact in Q2: 1e-6.
+friction     the same block slid under the die (mu = 0.2, v = 0.1 mm/s) in full slip, insulated,
+             no conductance: the heat into the block is the partition 0.5 of mu |F_y| v (every
+             node slips the die's travel once the sliding is steady); 1e-6.
+resume       the conduction run interrupted after step 25 (checkpoints every 10 steps) and resumed
+             gives the same history as the uninterrupted run, to the last digit.
+
+Usage: check_thermal.py AUSROLL SOURCE_DIR [CASE ...]
+"""
+
+import csv
+import math
+import os
+import shutil
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from checklist import Checklist, ausroll_command  # noqa: E402
+
+E, NU, SIGMA0, H = 210000.0, 0.3, 240.0, 1000.0  # the block's material
+RHO_C = 7.85e-9 * 4.6e8
+ALPHA = 1.2e-5
+
+
+def run(ausroll, prm, settings, directory, extra=(), mpi=0):
+    command = ausroll_command(ausroll, prm, list(settings) + [f"Output/Directory={directory}"])
+    command += list(extra)
+    if mpi:
+        command = ["mpirun", "-np", str(mpi)] + command
+    # as scripts/setup.sh: OpenMPI as root, two ranks sharing the cores of a parallel ctest
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1", DEAL_II_NUM_THREADS="1")
+    result = subprocess.run(command, capture_output=True, text=True, env=env)
+    if result.returncode != 0 and "--resume" not in extra and "Checkpoint/Abort after step=25" not in settings:
+        print(result.stdout[-3000:])
+        print(result.stderr[-3000:])
+        raise SystemExit(f"FAIL {' '.join(command)} exited with {result.returncode}")
+    return result
+
+
+def history(directory):
+    with open(os.path.join(directory, "history.csv")) as f:
+        rows = list(csv.DictReader(f))
+    return rows
+
+
+def last(directory):
+    return {k: float(v) for k, v in history(directory)[-1].items()}
+
+
+def temperatures(directory):
+    """(x, T) of every output point of the last VTU in DIRECTORY/solution.pvd."""
+    import xml.etree.ElementTree as ET
+    from vtkmodules.vtkIOXML import vtkXMLPUnstructuredGridReader
+    datasets = ET.parse(os.path.join(directory, "solution.pvd")).getroot().findall(".//DataSet")
+    reader = vtkXMLPUnstructuredGridReader()
+    reader.SetFileName(os.path.join(directory, datasets[-1].get("file")))
+    reader.Update()
+    grid = reader.GetOutput()
+    T = grid.GetPointData().GetArray("temperature")
+    return [(grid.GetPoint(i)[0], T.GetValue(i)) for i in range(grid.GetNumberOfPoints())]
+
+
+def strip_temperature(x, t, length=20.0, kappa=45.0 / RHO_C):
+    """20 C strip of LENGTH, x = 0 held at 120 C from t = 0, x = LENGTH insulated: the image
+    series of the semi-infinite erfc solution (the n-th pair of images mirrors the insulated and
+    the held end; six pairs reach round-off for 2 sqrt(kappa t) <= LENGTH)."""
+    d = 2.0 * math.sqrt(kappa * t)
+    series = sum((-1) ** n * (math.erfc((2 * n * length + x) / d)
+                              + math.erfc((2 * (n + 1) * length - x) / d)) for n in range(6))
+    return 20.0 + 100.0 * series
+
+
+def conduction_error(ausroll, prm, steps, directory, settings=()):
+    run(ausroll, prm, [f"Loading/Number of steps={steps}", f"Output/Interval={steps}"] + list(settings),
+        directory)
+    return max(abs(T - strip_temperature(x, 2.0)) for x, T in temperatures(directory))
+
+
+def main():
+    ausroll, source = sys.argv[1], sys.argv[2]
+    cases = sys.argv[3:] or ["conduction", "adiabatic", "free", "clamped", "plane_strain",
+                             "cylinder", "coupling", "conductance", "friction", "np2", "resume"]
+    scenes = os.path.join(source, "tests", "checks", "scenes")
+    strip = os.path.join(scenes, "thermal_conduction.prm")
+    block = os.path.join(scenes, "thermal_block_3d.prm")
+    checks = Checklist()
+
+    if "conduction" in cases:
+        e40 = conduction_error(ausroll, strip, 40, "conduction_40")
+        e20 = conduction_error(ausroll, strip, 20, "conduction_20")
+        print(f"conduction: max |T - T_erfc| = {e40:.4f} K (40 steps), {e20:.4f} K (20 steps), "
+              f"ratio {e20 / e40:.3f}")
+        checks("conduction: error below 0.4 K at 40 steps", e40 < 0.4)
+        checks("conduction: first order in time (error ratio 1.9 .. 2.1)", 1.9 < e20 / e40 < 2.1)
+
+    if "adiabatic" in cases:
+        # eps = 0.004 t; step 1 ends exactly at yield: t_1 = sigma_0 / (0.004 E)
+        t1 = SIGMA0 / (0.004 * E)
+        steps = 8
+        run(ausroll, block, ["Loading/End time=" + repr(steps * t1), f"Loading/Number of steps={steps}"],
+            "adiabatic")
+        rows = history("adiabatic")
+        worst = 0.0
+        for row in rows[1:]:
+            eps = 0.004 * float(row["time"])
+            a = max(0.0, (E * eps - SIGMA0) / (E + H))
+            expected = 20.0 + 0.9 * (SIGMA0 * a + 0.5 * H * a * a) / RHO_C
+            worst = max(worst, abs(float(row["T_mean"]) - expected) / (expected - 20.0 + 1e-300)
+                        if a > 0 else abs(float(row["T_mean"]) - 20.0))
+            spread = float(row["T_max"]) - float(row["T_min"])
+            worst = max(worst, spread / max(expected - 20.0, 1e-300) if a > 0 else spread)
+        final = float(rows[-1]["T_mean"]) - 20.0
+        # the reported plastic heating rate integrates to the heat content of the block (200 mm^3)
+        heat = sum(float(r["heat_plastic"]) * (float(r["time"]) - float(p["time"]))
+                   for p, r in zip(rows, rows[1:]))
+        content = RHO_C * final * 200.0
+        print(f"adiabatic: temperature rise {final:.6f} K, worst relative deviation {worst:.2e}; "
+              f"plastic heat {heat:.6f}, heat content {content:.6f} N mm")
+        checks("adiabatic: int heat_plastic dt = rho c dT V to 1e-6", abs(heat - content) < 1e-6 * content)
+        checks("adiabatic: dT = beta W_p / (rho c) to 1e-6, homogeneous", worst < 1e-6 and final > 0.3)
+
+    free_settings = ["Boundary conditions/Number of conditions=3", "Thermal/Initial temperature=120",
+                     f"Thermal/Thermal expansion={ALPHA}", "Loading/Number of steps=1"]
+    if "free" in cases:
+        for kinematics in ["small strain", "finite strain"]:
+            directory = "free_" + kinematics.replace(" ", "_")
+            run(ausroll, block, free_settings + [f"Model/Kinematics={kinematics}"], directory)
+            row = last(directory)
+            stretch = ALPHA * 100.0
+            deviation = max(abs(row["corner_ux"] - stretch * 10), abs(row["corner_uy"] - stretch * 5),
+                            abs(row["corner_uz"] - stretch * 4)) / (stretch * 10)
+            reactions = max(abs(row[f"reaction_{b}_{c}"]) for b in (1, 3) for c in "xyz")
+            print(f"free ({kinematics}): corner displacement deviation {deviation:.2e}, "
+                  f"largest reaction {reactions:.2e} N")
+            checks(f"free ({kinematics}): expands by (theta - 1) L to 1e-9", deviation < 1e-9)
+            checks(f"free ({kinematics}): stress-free (reactions below 1e-9 E alpha dT A)",
+                   reactions < 1e-9 * E * ALPHA * 100 * 20)
+
+    if "clamped" in cases:
+        run(ausroll, block, free_settings[2:] + ["Thermal/Initial temperature=100",
+                                                 "Boundary conditions/Condition 3/Boundary id=1",
+                                                 "Boundary conditions/Condition 3/Components=x",
+                                                 "Boundary conditions/Condition 3/Value=0"], "clamped")
+        row = last("clamped")
+        sigma = -E * ALPHA * 80.0
+        force = row["reaction_1_x"]
+        lateral = (1 + NU) * ALPHA * 80.0
+        print(f"clamped: reaction on x = 10: {force:.6f} N, expected magnitude {abs(sigma) * 20:.6f} N; "
+              f"corner u_y {row['corner_uy']:.6e}, expected {lateral * 5:.6e}")
+        checks("clamped: |F_x| = E alpha dT A to 1e-6", abs(abs(force) - abs(sigma) * 20) < 1e-6 * abs(sigma) * 20)
+        checks("clamped: lateral expansion (1 + nu) alpha dT to 1e-6",
+               abs(row["corner_uy"] - lateral * 5) < 1e-6 * lateral * 5
+               and abs(row["corner_uz"] - lateral * 4) < 1e-6 * lateral * 4)
+
+    if "plane_strain" in cases:
+        run(ausroll, strip, ["Thermal/Initial temperature=120", f"Thermal/Thermal expansion={ALPHA}",
+                             "Thermal/Number of conditions=0", "Loading/Number of steps=1",
+                             "Boundary conditions/Number of conditions=3",
+                             "Boundary conditions/Condition 0/Type=displacement",
+                             "Boundary conditions/Condition 0/Components=x",
+                             "Boundary conditions/Condition 0/Value=0",
+                             "Boundary conditions/Condition 1/Boundary id=1",
+                             "Boundary conditions/Condition 1/Type=displacement",
+                             "Boundary conditions/Condition 1/Components=x",
+                             "Boundary conditions/Condition 1/Value=0",
+                             "Boundary conditions/Condition 2/Boundary id=2",
+                             "Boundary conditions/Condition 2/Type=displacement",
+                             "Boundary conditions/Condition 2/Components=y",
+                             "Boundary conditions/Condition 2/Value=0",
+                             "Postprocess/Reaction boundaries=1"], "plane_strain")
+        row = last("plane_strain")
+        expected = 200000.0 * ALPHA * 100.0 / (1 - NU) * 1.0  # |sigma_xx| times the 1 mm height
+        print(f"plane strain: reaction on x = 20: {row['reaction_1_x']:.6f} N/mm, expected magnitude "
+              f"{expected:.6f}")
+        checks("plane strain: |F_x| = E alpha dT / (1 - nu) h to 1e-6",
+               abs(abs(row["reaction_1_x"]) - expected) < 1e-6 * expected)
+
+    if "cylinder" in cases:
+        run(ausroll, os.path.join(source, "prm", "thick_cylinder.prm"), [
+            "Boundary conditions/Condition 0/Value=0", "Material/Yield criterion=none",
+            "Thermal/Enabled=true", f"Thermal/Thermal expansion={ALPHA}", "Thermal/Number of conditions=2",
+            "Thermal/Condition 0/Boundary id=0", "Thermal/Condition 0/Type=temperature",
+            "Thermal/Condition 0/Value=120", "Thermal/Condition 1/Boundary id=1",
+            "Thermal/Condition 1/Type=temperature", "Thermal/Condition 1/Value=20", "Loading/End time=3e5",
+            "Loading/Number of steps=3", "Output/Interval=3", "Output/Verbosity=quiet"], "cylinder")
+        a, b, dT, e = 100.0, 200.0, 100.0, 210000.0
+        log_ba = math.log(b / a)
+        scale = ALPHA * e * dT / (2 * (1 - NU) * log_ba)
+        ratio = a * a / (b * b - a * a)
+        with open(os.path.join("cylinder", "probe_radial_0001.csv")) as f:
+            probe = list(csv.DictReader(f))
+        largest, error = 0.0, 0.0
+        for row in probe:
+            r = float(row["x"])
+            s_r = scale * (-math.log(b / r) - ratio * (1 - b * b / (r * r)) * log_ba)
+            s_t = scale * (1 - math.log(b / r) - ratio * (1 + b * b / (r * r)) * log_ba)
+            s_z = NU * (s_r + s_t) - ALPHA * e * dT * math.log(b / r) / log_ba
+            largest = max(largest, abs(s_r), abs(s_t), abs(s_z))
+            error = max(error, abs(float(row["stress_xx"]) - s_r), abs(float(row["stress_yy"]) - s_t),
+                        abs(float(row["stress_zz"]) - s_z))
+        heat = last("cylinder")["heat_condition_0"]
+        exact_heat = math.pi / 2 * 45.0 * dT / log_ba
+        print(f"cylinder: largest stress deviation {error:.4f} MPa of {largest:.2f} MPa "
+              f"({error / largest:.2e}); heat flow {heat:.4f}, exact {exact_heat:.4f} N mm/s")
+        checks("cylinder: Timoshenko thermal stresses within 0.5 %", error < 0.005 * largest)
+        checks("cylinder: steady heat flow (pi/2) k dT / ln(b/a) to 1e-6",
+               abs(heat - exact_heat) < 1e-6 * exact_heat)
+
+    if "coupling" in cases:
+        ramp = [f"Thermal/Thermal expansion={ALPHA}", "Thermal/Number of conditions=6", "Thermal/Specific heat=1",
+                "Boundary conditions/Number of conditions=4", "Boundary conditions/Condition 3/Boundary id=1",
+                "Boundary conditions/Condition 3/Components=x", "Boundary conditions/Condition 3/Value=0"]
+        for face in range(6):
+            ramp += [f"Thermal/Condition {face}/Boundary id={face}", f"Thermal/Condition {face}/Type=temperature",
+                     f"Thermal/Condition {face}/Value=20 + 80 * t"]
+        for iterations, lag in ((1, 1), (3, 0)):
+            directory = f"coupling_{iterations}"
+            result = run(ausroll, block, ramp + [f"Coupling/Iterations={iterations}",
+                                                 "Output/Verbosity=verbose"], directory)
+            rows = history(directory)
+            worst = 0.0
+            for n in range(1, len(rows)):
+                t_seen = float(rows[n - lag]["time"])
+                expected = -E * ALPHA * 80.0 * t_seen * 20.0
+                worst = max(worst, abs(float(rows[n]["reaction_1_x"]) - expected) / (E * ALPHA * 80.0 * 20.0))
+            solves = result.stdout.count("coupling: heat solve")
+            print(f"coupling (Iterations = {iterations}): largest deviation {worst:.2e} of E alpha 80 K A; "
+                  f"{solves} repeated-split heat solves logged")
+            checks(f"coupling (Iterations = {iterations}): mechanics at T(t_n-{lag}) to 1e-6", worst < 1e-6)
+            if iterations > 1:
+                checks("coupling: two heat solves per step (the second changes nothing)", solves == 2 * (len(rows) - 1))
+
+    slide = os.path.join(scenes, "block_slide.prm")
+    thermal_on = ["Thermal/Enabled=true", "Thermal/Thermal expansion=0", "Thermal/Initial temperature=20",
+                  "Output/Overwrite=true"]
+    if "conductance" in cases:
+        run(ausroll, slide, thermal_on + [
+            "Contact/Die 0/Motion/Translation=0; -0.011*min(t,1)", "Loading/End time=100",
+            "Loading/Number of steps=20", "Thermal/Contact conductance=10", "Thermal/Die temperatures=200",
+            "Thermal/Number of conditions=1", "Thermal/Condition 0/Boundary id=2",
+            "Thermal/Condition 0/Type=temperature", "Thermal/Condition 0/Value=20"], "conductance")
+        row = last("conductance")
+        k_over_L = 45.0 / 5.0
+        top = (10.0 * 200.0 + k_over_L * 20.0) / (10.0 + k_over_L)
+        heat = 10.0 * (200.0 - top) * 10.0
+        print(f"conductance: T_max {row['T_max']:.6f} (expected {top:.6f}), die heat {row['heat_die_0']:.4f} "
+              f"(expected {heat:.4f}), base {row['heat_condition_0']:.4f} N mm/s")
+        checks("conductance: steady contact temperature to 1e-6 of the range",
+               abs(row["T_max"] - top) < 1e-6 * 180.0)
+        checks("conductance: die heat h_c (T_die - T) A to 1e-6", abs(row["heat_die_0"] - heat) < 1e-6 * heat)
+        checks("conductance: the base takes it out (balance to 1e-6)",
+               abs(row["heat_die_0"] + row["heat_condition_0"]) < 1e-6 * heat)
+
+    if "friction" in cases:
+        run(ausroll, slide, thermal_on + [
+            "Contact/Die 0/Motion/Translation=0.1*max(t-1,0); -0.011*min(t,1)", "Loading/End time=4",
+            "Loading/Number of steps=16"], "friction")
+        row = last("friction")
+        fy = [row[c] for c in row if c.endswith("force_y")][0]
+        expected = 0.5 * 0.2 * abs(fy) * 0.1
+        print(f"friction: heat into the block {row['heat_die_0']:.6f} N mm/s, 0.5 mu |F_y| v = {expected:.6f}")
+        checks("friction: heat = partition mu p v to 1e-6", abs(row["heat_die_0"] - expected) < 1e-6 * expected)
+
+    if "np2" in cases:
+        run(ausroll, strip, [], "serial")
+        run(ausroll, strip, [], "parallel", mpi=2)
+        a, b = history("serial"), history("parallel")
+        checks("np2: same number of rows", len(a) == len(b))
+        worst = 0.0
+        for column in a[0].keys():
+            if column in ("wall_seconds",):
+                continue
+            scale = max(abs(float(r[column])) for r in a) or 1.0
+            for ra, rb in zip(a, b):
+                worst = max(worst, abs(float(ra[column]) - float(rb[column])) / scale)
+        print(f"np2: largest relative difference {worst:.2e}")
+        checks("np2: np = 2 equals np = 1 to 1e-8", worst < 1e-8)
+
+    if "resume" in cases:
+        base = ["Checkpoint/Interval=10"]
+        run(ausroll, strip, base, "whole")
+        shutil.rmtree("resumed", ignore_errors=True)
+        first = run(ausroll, strip, base + ["Checkpoint/Abort after step=25"], "resumed")
+        checks("resume: the first run stopped as asked (exit 99)", first.returncode == 99)
+        second = run(ausroll, strip, base, "resumed", extra=["--resume"])
+        checks("resume: the resumed run finished", second.returncode == 0)
+        a, b = history("whole"), history("resumed")
+        same = len(a) == len(b) and all(
+            ra[c] == rb[c] for ra, rb in zip(a, b) for c in ra if c != "wall_seconds")
+        checks("resume: history identical to the uninterrupted run", same)
+
+    return checks.exit_status()
+
+
+if __name__ == "__main__":
+    sys.exit(main())

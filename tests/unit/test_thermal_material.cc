@@ -1,0 +1,225 @@
+/**
+ * @file test_thermal_material.cc
+ * Temperature-dependent properties (PropertyTable) and thermal strain around every kinematics
+ * (ThermalExpansionModel): closed forms and finite-difference tangents.
+ */
+#include <ausroll/core/exceptions.h>
+#include <ausroll/material/constitutive_model.h>
+#include <ausroll/material/material_point.h>
+#include <ausroll/material/property_table.h>
+#include <ausroll/material/thermal_expansion_model.h>
+
+#include "material_test_utilities.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+using namespace ausroll::material;
+using dealii::Tensor;
+
+namespace
+{
+  const KinematicsType all_kinematics[] = {KinematicsType::small_strain,
+                                           KinematicsType::total_lagrangian,
+                                           KinematicsType::updated_lagrangian,
+                                           KinematicsType::finite_strain};
+
+  MaterialParameters steel(const double H = 0.)
+  {
+    MaterialParameters p;
+    p.youngs_modulus = 200000.;
+    p.poissons_ratio = 0.3;
+    p.yield_stress = 400.;
+    p.hardening_modulus = H;
+    return p;
+  }
+
+  Tensor<2, 3> identity()
+  {
+    return Tensor<2, 3>(dealii::unit_symmetric_tensor<3>());
+  }
+
+  ThermalExpansionParameters expansion(const double alpha, const double t_ref = 20.)
+  {
+    ThermalExpansionParameters t;
+    t.expansion = PropertyTable(alpha);
+    t.reference_temperature = t_ref;
+    return t;
+  }
+
+  double max_abs(const Tensor<2, 3> &t)
+  {
+    double m = 0.;
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        m = std::max(m, std::abs(t[i][j]));
+    return m;
+  }
+} // namespace
+
+// ------------------------------------------------------------------------------ PropertyTable
+
+TEST(PropertyTable, ConstantTableAndFile)
+{
+  const PropertyTable c = PropertyTable::parse("45", "Thermal/Conductivity", "", true);
+  EXPECT_TRUE(c.is_constant());
+  EXPECT_EQ(c.value(-100.), 45.);
+  EXPECT_EQ(c.value(1000.), 45.);
+  EXPECT_EQ(c.derivative(300.), 0.);
+
+  // linear between rows, constant beyond the ends (no extrapolation)
+  const PropertyTable t
+      = PropertyTable::parse("20: 45, 300: 40, 600: 34", "Thermal/Conductivity", "", true);
+  EXPECT_FALSE(t.is_constant());
+  EXPECT_DOUBLE_EQ(t.value(20.), 45.);
+  EXPECT_DOUBLE_EQ(t.value(160.), 42.5);
+  EXPECT_DOUBLE_EQ(t.value(450.), 37.);
+  EXPECT_DOUBLE_EQ(t.value(0.), 45.);
+  EXPECT_DOUBLE_EQ(t.value(900.), 34.);
+  EXPECT_DOUBLE_EQ(t.derivative(100.), -5. / 280.);
+  EXPECT_EQ(t.min_value(), 34.);
+  EXPECT_EQ(t.max_value(), 45.);
+
+  // the same table from a CSV file with a header, next to the .prm
+  {
+    std::ofstream f("property_table_test.csv");
+    f << "temperature,conductivity\n20, 45\n300, 40\n600, 34\n";
+  }
+  const PropertyTable from_file
+      = PropertyTable::parse("file: property_table_test.csv", "Thermal/Conductivity", ".", true);
+  for (const double T : {0., 20., 160., 450., 900.})
+    EXPECT_DOUBLE_EQ(from_file.value(T), t.value(T));
+}
+
+TEST(PropertyTable, BadTablesNameTheEntry)
+{
+  const auto message = [](const std::string &text, const bool positive)
+  {
+    try
+    {
+      PropertyTable::parse(text, "Thermal/Specific heat", ".", positive);
+    }
+    catch (const ausroll::InputError &e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message("20: 1, 20: 2", true).find("must increase strictly"), std::string::npos);
+  EXPECT_NE(message("300: 1, 20: 2", true).find("Thermal/Specific heat"), std::string::npos);
+  EXPECT_NE(message("20: 1, 300: -2", true).find("must be positive"), std::string::npos);
+  EXPECT_NE(message("", true).find("empty"), std::string::npos);
+  EXPECT_NE(message("20 45", true).find("is not a number"), std::string::npos);
+  EXPECT_NE(message("20: 45, 300", true).find("temperature: value"), std::string::npos);
+  EXPECT_NE(message("file: no_such_table.csv", true).find("cannot open"), std::string::npos);
+  EXPECT_NE(message("file: /dev/zero", true).find("not a regular file"), std::string::npos);
+}
+
+// ------------------------------------------------------------------------------ thermal strain
+
+TEST(ThermalExpansionModel, FreeExpansionIsStressFreeInEveryKinematics)
+{
+  // A free body heated uniformly: F = theta I (multiplicative) or I + (theta - 1) I (additive),
+  // which is the same tensor; P must vanish to round-off (relative to E alpha dT = 2400 MPa).
+  const double                     alpha = 1.2e-5, T = 1020.; // dT = 1000 K: theta - 1 = 0.012
+  const ThermalExpansionParameters thermal = expansion(alpha);
+  for (const KinematicsType k : all_kinematics)
+  {
+    const auto    model = create_constitutive_model(k, steel(), false, &thermal);
+    MaterialState old;
+    old.temperature = T;
+    MaterialState state;
+    Tensor<2, 3>  P;
+    model->evaluate((1. + alpha * 1000.) * identity(), old, state, P, nullptr);
+    EXPECT_LT(max_abs(P), 1e-9 * 2400.) << to_string(k);
+    EXPECT_EQ(state.temperature, T);
+  }
+}
+
+TEST(ThermalExpansionModel, ClampedBlockClosedForms)
+{
+  // F = I (clamped in all directions): small strain sigma = -3 K alpha dT exactly; finite strain
+  // (logarithmic elastic strain -ln(theta) per direction in the intermediate configuration):
+  // Cauchy sigma = -3 K ln(theta) theta^3 (tau_mech = -3 K ln theta per intermediate volume).
+  const double                     E = 200000., nu = 0.3, K = E / (3. * (1. - 2. * nu));
+  const double                     alpha = 1.2e-5, dT = 100.;
+  const double                     theta = 1. + alpha * dT;
+  const ThermalExpansionParameters thermal = expansion(alpha);
+  MaterialState                    old;
+  old.temperature = 20. + dT;
+  for (const auto &[k, expected] :
+       {std::pair{KinematicsType::small_strain, -3. * K * alpha * dT},
+        std::pair{KinematicsType::finite_strain, -3. * K * std::log(theta) * std::pow(theta, 3)}})
+  {
+    const auto    model = create_constitutive_model(k, steel(), false, &thermal);
+    MaterialState state;
+    Tensor<2, 3>  P;
+    model->evaluate(identity(), old, state, P, nullptr);
+    for (unsigned int i = 0; i < 3; ++i)
+    {
+      EXPECT_NEAR(state.stress[i][i], expected, 1e-10 * std::abs(expected)) << to_string(k);
+      EXPECT_NEAR(P[i][i], expected, 1e-10 * std::abs(expected)) << to_string(k); // F = I
+    }
+    EXPECT_NEAR(state.stress[0][1], 0., 1e-12 * std::abs(expected));
+  }
+}
+
+TEST(ThermalExpansionModel, TangentsMatchFiniteDifferences)
+{
+  // dP/dF of the wrapped model against central differences of all nine components of F
+  // (h = 1e-7; the bound of the isothermal models, 1e-6 relative), elastic and plastic, at T far
+  // from T_ref. (PlaneStressDriver condenses F_zz out of its tangent and is checked in
+  // test_finite_strain.cc; the wrapper sits inside it.)
+  const Tensor<2, 3> F_plastic
+      = identity() + Tensor<2, 3>({{0.03, 0.01, 0.}, {0.005, -0.02, 0.002}, {0., 0.003, -0.008}});
+  const Tensor<2, 3> F_elastic
+      = identity() + 1e-4 * Tensor<2, 3>({{3., 1., 0.}, {0.5, -2., 0.2}, {0., 0.3, -0.8}});
+  const ThermalExpansionParameters thermal = expansion(1.2e-5);
+  for (const KinematicsType k : all_kinematics)
+  {
+    const auto    model = create_constitutive_model(k, steel(1000.), false, &thermal);
+    MaterialState old;
+    old.temperature = 320.;
+    const double e_plastic = ausroll::testing::tangent_error(*model, old, F_plastic);
+    const double e_elastic = ausroll::testing::tangent_error(*model, old, F_elastic);
+    std::printf("[ %-18s ] FD error plastic %.2e, elastic %.2e\n",
+                to_string(k).c_str(),
+                e_plastic,
+                e_elastic);
+    EXPECT_LT(e_plastic, 1e-6) << to_string(k);
+    EXPECT_LT(e_elastic, 1e-6) << to_string(k);
+  }
+}
+
+TEST(ThermalExpansionModel, PlasticWorkOfLinearHardeningIsExact)
+{
+  // Small strain, uniaxial strain path, linear isotropic hardening: on the yield surface
+  // sigma_vm = sigma_0 + H alpha, so the trapezoidal rule integrates int sigma_vm d alpha
+  // exactly once the path is plastic: W(alpha_2) - W(alpha_1) = sigma_0 (alpha_2 - alpha_1)
+  // + H (alpha_2^2 - alpha_1^2) / 2 to round-off, whatever the step sizes.
+  const double                     H = 2000.;
+  const ThermalExpansionParameters thermal = expansion(1.2e-5);
+  const auto                       model
+      = create_constitutive_model(KinematicsType::small_strain, steel(H), false, &thermal);
+  MaterialPoint point;
+  point.committed.temperature = point.trial.temperature = 20.;
+  Tensor<2, 3>        P;
+  std::vector<double> alpha, work;
+  for (unsigned int s = 1; s <= 40; ++s)
+  {
+    Tensor<2, 3> F = identity();
+    F[0][0] -= 0.0005 * s + 1e-5 * s * s; // uneven steps
+    model->evaluate(F, point.committed, point.trial, P, nullptr);
+    point.commit();
+    alpha.push_back(point.committed.equivalent_plastic_strain);
+    work.push_back(point.committed.plastic_work);
+  }
+  ASSERT_GT(alpha[5], 0.);
+  ASSERT_GT(alpha.back(), 0.01);
+  const double a1 = alpha[5], a2 = alpha.back();
+  const double expected = 400. * (a2 - a1) + 0.5 * H * (a2 * a2 - a1 * a1);
+  EXPECT_NEAR(work.back() - work[5], expected, 1e-10 * expected);
+}
