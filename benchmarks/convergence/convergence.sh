@@ -27,6 +27,20 @@ case "$SCENE" in
       --value "d_n_min=d_n_min" --value "p_n_max=p_n_max" --value "plastic_depth=plastic_depth"
       --profile "d_n=residual_dn.csv:R:d_n")
     PLOT=gear_work_precision.png ;;
+  gear_ausrolling)
+    # the hot scene: t in seconds (14 deg of rolling in 0.1 s), so F_0.06 is at the angle of the
+    # flagship's F_0.6; the coolest and hottest temperatures of the run besides the mechanics
+    PRM=prm/gear_ausrolling.prm
+    DEFAULTS=("3 4 5" "120 240 480" 5)
+    SCENE_OPTIONS=(
+      --set "Output/Write VTU = true" --set "Output/Interval = 1"
+      --history "F_peak=max:hypot(die_die_force_x, die_die_force_y)"
+      --history "F_0.06=at(0.06):hypot(die_die_force_x, die_die_force_y)"
+      --history "T_min=min:T_min" --history "T_max=max:T_max"
+      --after "/usr/bin/python3 $ROOT/benchmarks/gear_rolling/gear_quantities.py {out}"
+      --value "d_n_min=d_n_min" --value "p_n_max=p_n_max" --value "plastic_depth=plastic_depth"
+      --profile "d_n=residual_dn.csv:R:d_n")
+    PLOT=gear_ausrolling_work_precision.png ;;
   disk_rolling)
     PRM=prm/disk_rolling_quick.prm
     DEFAULTS=("1 2 3" "144 288 576" 2)
@@ -41,7 +55,7 @@ case "$SCENE" in
       --profile "rim=profile_*.csv:angle:radial_displacement")
     PLOT=disk_work_precision.png ;;
   *)
-    echo "usage: $0 gear_rolling|disk_rolling [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [options]" >&2
+    echo "usage: $0 gear_rolling|gear_ausrolling|disk_rolling [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [options]" >&2
     exit 1 ;;
 esac
 shift
