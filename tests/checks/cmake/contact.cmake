@@ -13,6 +13,7 @@ ausroll_add_check(NAME contact_block_press
   CHECK ${AUSROLL_CHECKS_DIR}/check_history.py
   ARGS out/history.csv --value die_punch_force_y 1 -4615.384615 1e-9
        --value die_punch_force_x 1 0 1e-9 --value die_punch_slip_nodes 1 17 0)
+set_property(TEST check/contact_block_press APPEND PROPERTY LABELS quick)
 
 # 3D (Scene<3>) block in uniaxial compression by a prescribed top displacement, J2 with linear
 # hardening: reaction and lateral displacements on the elastic and the hardening branch against the
@@ -26,6 +27,7 @@ ausroll_add_check(NAME scene3d_block_hardening
        --value reaction_3_y 1 -9713.744076 1e-9
        --value corner_ux 1 0.01768720379 1e-9 --value corner_uz 1 0.007074881517 1e-9
        --value reaction_3_x 1 0 1e-9 --value reaction_3_z 1 0 1e-9)
+set_property(TEST check/scene3d_block_hardening APPEND PROPERTY LABELS quick)
 
 # 3D (Scene<3>) block pressed by a frictionless plane die: uniform stress, so the die force is
 # exact (round-off tolerance) and balanced by the base reaction; all top nodes slip.

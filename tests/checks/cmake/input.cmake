@@ -3,11 +3,18 @@
 # ausroll_add_script_check, ausroll_add_resume_check there).
 
 # Malformed input files: clear message naming the entry, exit status 2, no output left behind.
-add_test(NAME check/bad_input
-  COMMAND ${Python3_EXECUTABLE} ${AUSROLL_CHECKS_DIR}/check_bad_inputs.py
-          $<TARGET_FILE:ausroll> ${AUSROLL_CHECKS_DIR}/bad_input
-  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-set_tests_properties(check/bad_input PROPERTIES LABELS check TIMEOUT 600)
+# Every case of tests/checks/bad_input/ runs in exactly one of the shards (the K-th takes every
+# AUSROLL_BAD_INPUT_SHARDS-th case from the K-th on), so that ctest -j runs them side by side.
+set(AUSROLL_BAD_INPUT_SHARDS 4)
+foreach(_k RANGE 1 ${AUSROLL_BAD_INPUT_SHARDS})
+  set(_name check/bad_input/shard_${_k}_of_${AUSROLL_BAD_INPUT_SHARDS})
+  add_test(NAME ${_name}
+    COMMAND ${Python3_EXECUTABLE} ${AUSROLL_CHECKS_DIR}/check_bad_inputs.py
+            $<TARGET_FILE:ausroll> ${AUSROLL_CHECKS_DIR}/bad_input
+            --shard ${_k}/${AUSROLL_BAD_INPUT_SHARDS}
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  set_tests_properties(${_name} PROPERTIES LABELS "check;quick" TIMEOUT 600)
+endforeach()
 
 # ---------------------------------------------------------------- documentation
 # doc/parameters.md must be exactly what `ausroll --print-parameters=markdown` prints (regenerate
@@ -15,4 +22,4 @@ set_tests_properties(check/bad_input PROPERTIES LABELS check TIMEOUT 600)
 add_test(NAME check/parameters_doc_current
   COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:ausroll> -DDOC=${CMAKE_SOURCE_DIR}/doc/parameters.md
           -DOUT=${CMAKE_CURRENT_BINARY_DIR}/parameters.md -P ${AUSROLL_CHECKS_DIR}/run_doc_check.cmake)
-set_tests_properties(check/parameters_doc_current PROPERTIES LABELS check)
+set_tests_properties(check/parameters_doc_current PROPERTIES LABELS "check;quick")
