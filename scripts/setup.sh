@@ -18,7 +18,7 @@ export OMPI_MCA_mpi_yield_when_idle=1
 export DEAL_II_NUM_THREADS="${DEAL_II_NUM_THREADS:-1}"
 
 ausroll_packages=(
-  cmake g++ make perl python3 python3-matplotlib
+  cmake g++ make perl python3 python3-matplotlib clang-format
   libdeal.ii-dev libeigen3-dev libgtest-dev numdiff openmpi-bin
 )
 

@@ -13,6 +13,11 @@ Each file states what it expects in its first lines:
 A case passes if ausroll exits with that status, prints the expected text on stderr, does not
 crash (no signal, no "internal error"), keeps its message under 4000 characters, stays below 8 GB of memory and 120 s, and (for an input
 error) leaves no solution.pvd and no output directory behind.
+
+Usage: check_bad_inputs.py AUSROLL DIRECTORY [--shard K/N]
+With --shard K/N (1 <= K <= N) only every N-th case of the sorted list is run, starting with the
+K-th: the N shards together run every case once (ctest runs them as check/bad_input/shard_K_of_N,
+side by side under ctest -j).
 """
 
 import os
@@ -46,11 +51,22 @@ def limit_memory():
 
 
 def main():
-    if len(sys.argv) != 3:
-        print("usage: check_bad_inputs.py AUSROLL DIRECTORY", file=sys.stderr)
+    args = sys.argv[1:]
+    shard, n_shards = 1, 1
+    if len(args) == 4 and args[2] == "--shard":
+        try:
+            shard, n_shards = (int(v) for v in args[3].split("/"))
+        except ValueError:
+            shard = 0
+        args = args[:2]
+    if len(args) != 2 or not 1 <= shard <= n_shards:
+        print("usage: check_bad_inputs.py AUSROLL DIRECTORY [--shard K/N]", file=sys.stderr)
         return 2
-    ausroll, directory = sys.argv[1], sys.argv[2]
-    cases = sorted(f for f in os.listdir(directory) if f.endswith(".prm"))
+    ausroll, directory = args
+    cases = sorted(f for f in os.listdir(directory) if f.endswith(".prm"))[shard - 1::n_shards]
+    if not cases:
+        print(f"no .prm cases in {directory} (shard {shard}/{n_shards})")
+        return 1
     failures = 0
     for name in cases:
         path = os.path.join(directory, name)

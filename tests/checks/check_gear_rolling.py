@@ -14,7 +14,7 @@ Usage: check_gear_rolling.py OUT_DIR --direction S --theta0 DEG --rate DEG --t-r
    rotates the contact normal by a few 1e-3 rad; the measured deviation on the scene mesh is
    below 0.01).
 2. Force sign and magnitude: F_x < 0 (the die pushes the tooth towards -x) and
-   LOW <= |F| <= HIGH at the last step (bounds justified in tests/checks/checks.cmake).
+   LOW <= |F| <= HIGH at the last step (bounds justified in tests/checks/cmake/gear_rolling.cmake).
 3. With --mu (Coulomb die, full slip while rolling): the friction part of the die force on the
    flank, F_t / F_n = mu sign(theta_G - theta_p), F_n and F_t the components along the inward
    normal and along the tangent towards the tip (directions of the line of action). theta_p =

@@ -20,7 +20,7 @@ short: a few steps of the 3D scene (half face by symmetry) and its mirror image 
   middle of the mesh).
   1. Force sign: F_x < 0 at every loaded step (the die pushes the right flank towards -x) and
      the force per mm of face, |F_xy| / (Face width / 2), within 50 ... 1340 N/mm (the bounds of
-     check/gear_rolling_short, tests/checks/checks.cmake: lost contact / plane-strain Prandtl
+     check/gear_rolling_short, tests/checks/cmake/gear_rolling.cmake: lost contact / plane-strain Prandtl
      pressure over the geometric contact chord).
   2. Coulomb bound, per node (the contact_NNNN.csv of every step): |R_t| <= mu R_n (1 + 1e-8) for
      every node in contact, R_t = (R_t1, R_t2) the tangential nodal force in the die's tangent

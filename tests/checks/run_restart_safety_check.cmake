@@ -1,4 +1,4 @@
-# Restart and output-directory safety (see checks.cmake, check/restart_safety). RUN: ausroll,
+# Restart and output-directory safety (see cmake/checkpoint.cmake, check/restart_safety). RUN: ausroll,
 # PRM: a scene with Checkpoint/Interval = 2 and Output/Directory = out.
 foreach(_v RUN PRM)
   if(NOT DEFINED ${_v})

@@ -1,3 +1,4 @@
+// clang-format off
 /**
  * @file contact_strategy.h
  * The contact strategies of `Contact/Strategy` as objects: each owns its loop logic (when nodes
@@ -5,18 +6,25 @@
  * whatever the strategy.
  *
  * A load step with contact, as the scene drives it:
- *   begin_step()                    once per load step (before the first Newton solve)
+ *
+ *   begin_step()                   once per load step (before the first Newton solve)
  *   per Newton assembly:
- *     begin_iterate()               time of the iterate; statuses of the last iterate may be judged
+ *     begin_iterate()              time of the iterate; statuses of the last iterate may be judged
  *     repeat:
- *       update_geometry()           project the nodes, close penetrating ones if the strategy says
- * so (constraints, assembly, ContactOperator::compute_reactions()) while update_at_iterate() > 0
- * (statuses changed at this iterate: re-assemble) update_at_convergence()
- * NonlinearProblem::update_constraints_at_convergence() backtrack_with_small_constraint_gaps() the
- * NonlinearProblem hook of the same name end_of_step()                   after a converged solve:
- * accept, repeat or shorten the step restart_step()                  after a failed solve (cutback,
- * no predictor)
+ *       update_geometry()          project the nodes, close penetrating ones if the strategy
+ *                                  says so
+ *       (constraints, assembly, ContactOperator::compute_reactions())
+ *     while update_at_iterate() > 0   (statuses changed at this iterate: re-assemble)
+ *   at a converged iterate:
+ *     update_at_convergence()      called by NonlinearProblem::update_constraints_at_convergence();
+ *                                  changes: Newton continues with the new constraints
+ *   backtrack_with_small_constraint_gaps()
+ *                                  the NonlinearProblem hook of the same name (line search)
+ *   end_of_step()                  after a converged solve: accept, repeat or shorten the step
+ *   restart_step()                 after a failed solve (cutback, no predictor); then
+ *   release_after_failure()        changes: one more solve of the same step before the cutback
  */
+// clang-format on
 #pragma once
 
 #include <ausroll/contact/contact_parameters.h>

@@ -36,7 +36,7 @@ namespace ausroll::mechanics
    * the last converged state (vectors and trial material states).
    *
    * What lies above mechanics/ (linear solver, contact nodes, material-point transfer) is set up by
-   * the owner of the system after setup_system() (see scene::Scene::setup_system()).
+   * the owner of the system after setup_system() (see scene::Scene::setup_dof_dependents()).
    * The data members are public: the system is the state the other parts read and write.
    */
   template <int dim>

@@ -1,0 +1,25 @@
+# Scene checks, Output: ParaView/VTK files and the field plot script.
+# Included by tests/checks/CMakeLists.txt (helpers: ausroll_add_check, ausroll_add_parallel_check,
+# ausroll_add_script_check, ausroll_add_resume_check there).
+
+# ---------------------------------------------------------------- ParaView / VTK
+configure_file(${AUSROLL_CHECKS_DIR}/scenes/block_press_vtu.prm.in ${CMAKE_CURRENT_BINARY_DIR}/block_press_vtu.prm @ONLY)
+# solution.pvd and the .pvtu/.vtu files open with VTK's readers, carry the documented fields, and
+# hold the exact uniform state of the pressed block: sigma_yy = -E/(1-nu^2) * 0.002 = -461.538 MPa
+# in every cell (1e-6: float32 output), u_y between -0.010 mm (top) and 0 (base).
+# Skipped (exit 77) when python3-vtk9 is not installed; scripts/test.sh installs it.
+ausroll_add_check(NAME paraview_vtu_block_press
+  PRM ${CMAKE_CURRENT_BINARY_DIR}/block_press_vtu.prm
+  CHECK ${AUSROLL_CHECKS_DIR}/check_vtu.py
+  ARGS out --expect-cell stress_yy -461.5384615 1e-6 --expect-cell stress_xx 0 1e30
+       --expect-point-range displacement 1 -0.0100001 1e-9)
+set_tests_properties(check/paraview_vtu_block_press PROPERTIES SKIP_REGULAR_EXPRESSION "SKIPPED: VTK")
+# scripts/plot_field.py draws a field of that output (reads the .pvd, writes a PNG); runs after
+# the check above, on its output directory.
+add_test(NAME check/plot_field_script
+  COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/scripts/plot_field.py
+          paraview_vtu_block_press/out/solution.pvd stress_yy --warp 10 --edges --mirror x -o plot_field.png
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(check/plot_field_script PROPERTIES LABELS check
+  DEPENDS check/paraview_vtu_block_press REQUIRED_FILES ${CMAKE_CURRENT_BINARY_DIR}/paraview_vtu_block_press/out/solution.pvd
+  PASS_REGULAR_EXPRESSION "wrote plot_field.png")
