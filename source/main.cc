@@ -26,6 +26,9 @@ namespace
            "       ausroll --print-parameters[=prm|markdown]\n"
            "                                     print every parameter with its default and\n"
            "                                     documentation (default format: prm)\n"
+           "       ausroll --print-parameters FILE.prm [--set ...]\n"
+           "                                     print the effective parameters of FILE.prm\n"
+           "                                     (includes expanded, overrides applied; PRM)\n"
            "       ausroll --help                this text\n"
            "       ausroll --version             version\n"
            "Options after FILE.prm:\n"
@@ -143,8 +146,18 @@ int main(int argc, char **argv)
       if (format != "prm" && format != "markdown")
         throw ausroll::UsageError("--print-parameters: unknown format '" + format
                                   + "' (prm or markdown)");
-      if (argc != 2)
-        throw ausroll::UsageError("unknown argument '" + std::string(argv[2]) + "'");
+      if (argc > 2)
+      {
+        // the effective parameters of a file (as written to Output/Directory/parameters.prm)
+        const CommandLine line = parse_command_line(argc - 1, argv + 1);
+        if (line.resume || format != "prm")
+          throw ausroll::UsageError("--print-parameters FILE.prm takes only --set options "
+                                    "(and the prm format)");
+        const auto parameters = ausroll::scene::read_parameter_file(line.file, line.overrides);
+        if (root)
+          std::cout << parameters.effective_parameters;
+        return 0;
+      }
       if (root)
       {
         dealii::ParameterHandler prm;

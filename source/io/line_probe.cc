@@ -3,6 +3,7 @@
 #include <ausroll/core/parse_utilities.h>
 #include <ausroll/io/line_probe.h>
 #include <ausroll/io/owned_cell_around_point.h>
+#include <ausroll/io/postprocess/material_state.h>
 
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
@@ -98,9 +99,12 @@ namespace ausroll::io
                               const Mapping<dim>                         &mapping,
                               const DoFHandler<dim>                      &dof_handler,
                               const TrilinosWrappers::MPI::Vector        &solution,
-                              const mechanics::MaterialPointStorage<dim> &material_points) const
+                              const mechanics::MaterialPointStorage<dim> &material_points,
+                              const bool                                  small_strain) const
   {
     const MPI_Comm comm = dof_handler.get_communicator();
+    const auto     components = postprocess::tensor_components<dim>();
+    const unsigned n_shear = dim == 3 ? 2 : 0; // stress_xz, stress_yz
     for (const Probe &probe : probes)
     {
       // Each rank evaluates its samples: (index, values...).
@@ -116,12 +120,19 @@ namespace ausroll::io
         std::vector<Tensor<1, dim>> u(1);
         fe_values[FEValuesExtractors::Vector(0)].get_function_values(solution, u);
 
-        const auto points = material_points.get_data(s.cell);
-        const auto weights = interpolation.weights(s.unit_point);
-        double     fields[6] = {0, 0, 0, 0, 0, 0};
+        const auto          points = material_points.get_data(s.cell);
+        const auto          weights = interpolation.weights(s.unit_point);
+        double              fields[6] = {0, 0, 0, 0, 0, 0};
+        std::vector<double> more(n_shear + components.size(), 0.); // shear stresses, strain
         for (unsigned int k = 0; k < points.size(); ++k)
         {
           const auto &st = points[k]->committed;
+          const auto  eps = postprocess::strain_tensor(st, small_strain);
+          for (unsigned int i = 0; i < n_shear; ++i)
+            more[i]
+                += weights[k] * st.stress[components[4 + i].second[0]][components[4 + i].second[1]];
+          for (unsigned int i = 0; i < components.size(); ++i)
+            more[n_shear + i] += weights[k] * eps[components[i].second[0]][components[i].second[1]];
           fields[0] += weights[k] * st.stress[0][0];
           fields[1] += weights[k] * st.stress[1][1];
           fields[2] += weights[k] * st.stress[2][2];
@@ -135,6 +146,7 @@ namespace ausroll::io
         for (unsigned int d = 0; d < dim; ++d)
           row.push_back(u[0][d]);
         row.insert(row.end(), fields, fields + 6);
+        row.insert(row.end(), more.begin(), more.end());
         rows.push_back(row);
       }
       const std::vector<std::vector<double>> all = gather_sorted_rows(comm, rows);
@@ -146,8 +158,12 @@ namespace ausroll::io
            << counter << ".csv";
       std::ofstream out(name.str());
       out << "time,s,x,y" << (dim == 3 ? ",z" : "") << ",ux,uy" << (dim == 3 ? ",uz" : "")
-          << ",stress_xx,stress_yy,stress_zz,stress_xy,von_mises_stress,equivalent_plastic_strain\n"
-          << std::setprecision(10);
+          << ",stress_xx,stress_yy,stress_zz,stress_xy,von_mises_stress,equivalent_plastic_strain";
+      for (unsigned int i = 0; i < n_shear; ++i)
+        out << ",stress_" << components[4 + i].first;
+      for (const auto &c : components)
+        out << ",strain_" << c.first;
+      out << '\n' << std::setprecision(10);
       for (const auto &row : all)
       {
         out << time;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <regex>
 
 namespace ausroll::io
@@ -14,7 +15,7 @@ namespace ausroll::io
   std::vector<std::string> earlier_results(const std::string &directory)
   {
     const std::regex numbered(
-        R"((solution_[0-9]+(\.[0-9]+)?\.(vtu|pvtu)|(contact|profile)_[0-9]{4}\.csv|probe_.+_[0-9]{4}\.csv))");
+        R"((solution_[0-9]+(\.[0-9]+)?\.(vtu|pvtu)|(contact|profile)_[0-9]{4}\.csv|probe_.+_[0-9]{4}\.csv|dies_[0-9]+(_[0-9]+)?\.(vtu|vtm)))");
     std::vector<std::string> found;
     std::error_code          ec;
     for (const auto &entry : fs::directory_iterator(directory, ec))
@@ -22,8 +23,9 @@ namespace ausroll::io
       const std::string name = entry.path().filename().string();
       if (entry.is_directory(ec)
               ? (name == "checkpoint" || name == "checkpoint.old" || name == "checkpoint.new")
-              : (name == "history.csv" || name == "solution.pvd"
-                 || std::regex_match(name, numbered)))
+              : (name == "history.csv" || name == "solution.pvd" || name == "dies.pvd"
+                 || name == "history_units.csv" || name == "solution_units.csv"
+                 || name == "parameters.prm" || std::regex_match(name, numbered)))
         found.push_back(name);
     }
     std::sort(found.begin(), found.end());
@@ -57,6 +59,27 @@ namespace ausroll::io
         if (ec || !fs::is_directory(directory))
           error = "Output/Directory: cannot create '" + directory + "'";
       }
+    }
+    error = dealii::Utilities::MPI::broadcast(comm, error, 0);
+    if (!error.empty())
+      throw InputError(error);
+  }
+
+  void
+  write_parameter_copy(const std::string &directory, const std::string &text, const MPI_Comm comm)
+  {
+    std::string error;
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+    {
+      const std::string file = directory + "/parameters.prm";
+      std::ofstream     out(file);
+      out << "# The effective parameters of this run (the .prm as parsed, includes expanded,\n"
+             "# --set overrides applied), every entry; an entry that differs from its default\n"
+             "# ends in '# default: ...'. Relative file names are relative to the original .prm.\n"
+          << text;
+      out.close();
+      if (!out)
+        error = "Output/Directory: cannot write '" + file + "'";
     }
     error = dealii::Utilities::MPI::broadcast(comm, error, 0);
     if (!error.empty())

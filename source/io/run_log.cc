@@ -1,5 +1,9 @@
 #include <ausroll/io/run_log.h>
 
+#include <deal.II/base/mpi.h>
+
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -71,7 +75,7 @@ namespace ausroll::io
     log << std::endl;
   }
 
-  void write_step_line(dealii::ConditionalOStream &log, const StepSummary &s)
+  void write_step_line(dealii::ConditionalOStream &log, const StepSummary &s, const double eta)
   {
     std::ostringstream percent;
     percent << std::fixed << std::setprecision(1) << std::setw(5) << 100. * s.fraction;
@@ -83,9 +87,84 @@ namespace ausroll::io
     if (s.contact)
       log << "  stick/slip " << s.n_stick << "/" << s.n_slip;
     log << "  DoFs " << s.n_dofs << "  elapsed " << format_seconds(s.elapsed) << "  ETA "
-        << format_seconds(s.elapsed * (1. - s.fraction)
-                          / std::max(s.fraction - s.start_fraction, 1e-12))
-        << std::endl;
+        << format_seconds(eta) << std::endl;
+  }
+
+  void EtaEstimator::start(const double start_fraction, const double elapsed)
+  {
+    progress.assign(1, {start_fraction, elapsed});
+  }
+
+  void EtaEstimator::add(const double fraction, const double elapsed)
+  {
+    if (progress.empty())
+      progress.emplace_back(0., 0.);
+    progress.emplace_back(fraction, elapsed);
+  }
+
+  double EtaEstimator::eta() const
+  {
+    if (progress.size() < 2)
+      return 0.;
+    const auto [f0, t0] = progress.front();
+    const auto [f, t] = progress.back();
+    const double remaining = std::max(0., 1. - f);
+    const double overall = (t - t0) / std::max(f - f0, 1e-12);
+    // the recent steps: back to a third of the load done in this process, at least 3 steps
+    std::size_t i = progress.size() - 1;
+    while (i > 0 && (f - progress[i].first < (f - f0) / 3. || progress.size() - 1 - i < 3))
+      --i;
+    const double recent = (t - progress[i].second) / std::max(f - progress[i].first, 1e-12);
+    return remaining * std::max(overall, recent);
+  }
+
+  void RunTotals::record_force(const unsigned int k,
+                               const std::string &name,
+                               const double       force,
+                               const double       time)
+  {
+    if (k >= peak_force.size())
+    {
+      die_names.resize(k + 1);
+      peak_force.resize(k + 1, -1.);
+      peak_time.resize(k + 1, 0.);
+    }
+    die_names[k] = name;
+    if (force > peak_force[k])
+    {
+      peak_force[k] = force;
+      peak_time[k] = time;
+    }
+  }
+
+  double process_cpu_seconds()
+  {
+    rusage usage;
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_utime.tv_sec + 1e-6 * usage.ru_utime.tv_usec + usage.ru_stime.tv_sec
+           + 1e-6 * usage.ru_stime.tv_usec;
+  }
+
+  void write_run_summary(dealii::ConditionalOStream &log,
+                         const RunTotals            &totals,
+                         const std::size_t           steps,
+                         const unsigned long long    solves,
+                         const double                median,
+                         const unsigned long long    discarded,
+                         const double                wall_seconds,
+                         const MPI_Comm              comm)
+  {
+    const double       cpu = dealii::Utilities::MPI::sum(process_cpu_seconds(), comm);
+    const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    write_solve_summary(log, steps, solves, median, discarded);
+    log << "steps: " << steps << " converged, " << totals.cutbacks << " cutback"
+        << (totals.cutbacks == 1 ? "" : "s") << std::endl;
+    for (std::size_t k = 0; k < totals.peak_force.size(); ++k)
+      if (totals.peak_force[k] >= 0.)
+        log << "peak die force: " << totals.die_names[k] << "  |F|max = " << std::setprecision(6)
+            << totals.peak_force[k] << " N at t = " << totals.peak_time[k] << std::endl;
+    log << "time: " << format_seconds(wall_seconds) << " wall, " << format_seconds(cpu) << " CPU"
+        << (ranks > 1 ? " (all " + std::to_string(ranks) + " ranks)" : "") << std::endl;
   }
 
   void write_regression_line(dealii::ConditionalOStream &log,

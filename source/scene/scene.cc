@@ -97,6 +97,7 @@ namespace ausroll::scene
         // Input errors found here leave no output directory behind.
         check_setup(parameters, system.triangulation, boundary_conditions, contact);
         io::prepare_output_directory(dir, parameters.output.overwrite, comm);
+        io::write_parameter_copy(dir, parameters.effective_parameters, comm);
       }
       postprocessors->open_vtu_writer(dir);
     }
@@ -358,16 +359,18 @@ namespace ausroll::scene
                                   n_slip,
                                   system.dof_handler.n_dofs(),
                                   wall_clock.wall_time()};
-    io::write_step_line(log, summary);
+    eta.add(summary.fraction, summary.elapsed);
+    io::write_step_line(log, summary, eta.eta());
     io::write_regression_line(regression_log, step_number, row);
 
+    run_totals.cutbacks += step.cutbacks;
     if (contact.active())
       for (unsigned int k = 0; k < contact.n_dies(); ++k)
-        if (!die_touched[k])
-        {
-          const auto c = contact.die_contact(k);
-          die_touched[k] = c.n_stick + c.n_slip > 0;
-        }
+      {
+        const auto c = contact.die_contact(k);
+        die_touched[k] = die_touched[k] || c.n_stick + c.n_slip > 0;
+        run_totals.record_force(k, contact.die(k).name, c.force.norm(), step.time);
+      }
 
     check_distortion();
     if (contact.active())
@@ -445,18 +448,28 @@ namespace ausroll::scene
 
     die_touched.assign(contact.active() ? contact.n_dies() : 0, false);
     start_fraction = time / parameters.loading.end_time; // done before this process started
+    eta.start(start_fraction, wall_clock.wall_time());
     smallest_extent = system.smallest_extent();
     large_displacement_warned = !model->is_small_strain();
 
     stepper.run(*this, time, dt, step_number);
     write_output();
 
-    io::write_solve_summary(log,
-                            stepper.solve_count.per_step.size(),
-                            stepper.solve_count.accepted(),
-                            stepper.solve_count.median(),
-                            stepper.solve_count.discarded);
-    io::write_run_footer(log,
+    // the summary: also at Verbosity = quiet
+    ConditionalOStream summary_log(
+        std::cout,
+        io::prints(parameters.output.verbosity,
+                   {Verbosity::quiet, Verbosity::normal, Verbosity::verbose},
+                   rank));
+    io::write_run_summary(summary_log,
+                          run_totals,
+                          stepper.solve_count.per_step.size(),
+                          stepper.solve_count.accepted(),
+                          stepper.solve_count.median(),
+                          stepper.solve_count.discarded,
+                          wall_clock.wall_time(),
+                          comm);
+    io::write_run_footer(summary_log,
                          step_number,
                          wall_clock.wall_time(),
                          parameters.output.directory,

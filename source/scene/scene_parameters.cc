@@ -2,6 +2,7 @@
 #include <ausroll/core/parameter_file.h>
 #include <ausroll/scene/scene_parameters.h>
 
+#include <sstream>
 #include <vector>
 
 namespace ausroll::scene
@@ -72,6 +73,9 @@ namespace ausroll::scene
       throw InputError(filename + ": " + user_message(e));
     }
     parameters.entries = entries;
+    std::ostringstream printed;
+    prm.print_parameters(printed, ParameterHandler::PRM);
+    parameters.effective_parameters = printed.str();
     return parameters;
   }
 } // namespace ausroll::scene

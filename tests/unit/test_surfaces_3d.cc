@@ -848,3 +848,60 @@ TEST(Surfaces3D, ParameterErrorsNameTheFullPath)
           .find("Contact/Die 0/Extruded profile/Profile/Tip radius: "),
       std::string::npos);
 }
+
+// point_at() inverts the projection's surface coordinates (the die output samples the surfaces
+// through it): point_at(project(x).coordinates) = project(x).point to 1e-12 of the size, for
+// every shape (the extruded profile without caps: cap coordinates are not unique), also after
+// shifting a periodic coordinate by its period; and a few points of the cylinder's meridian
+// profile at known s (upper face, rim, mantle, lower rim, lower face).
+TEST(Surfaces3D, PointAtInvertsTheProjection)
+{
+  const ausroll::geometry::InvoluteGear gear(20, 2., 20. * numbers::PI / 180.);
+  const FiniteCylinder  cylinder(oblique_origin, oblique_axis, 5., 3., 0.5, oblique_reference);
+  const FiniteCylinder  sharp(oblique_origin, oblique_axis, 5., 3., 0., oblique_reference);
+  const Torus           torus(oblique_origin, oblique_axis, 5., 1.5, oblique_reference);
+  const Plane           plane(oblique_origin, oblique_axis, oblique_reference, 3., 2.);
+  const RevolvedProfile barrel(DieSurface::arc_line_composite({Point<2>(0., 2.),
+                                                               Point<2>(4., 2.),
+                                                               Point<2>(5., 0.),
+                                                               Point<2>(4., -2.),
+                                                               Point<2>(0., -2.)},
+                                                              {0.5}),
+                               oblique_origin,
+                               oblique_axis,
+                               oblique_reference);
+  const ExtrudedProfile extruded(DieSurface::involute_gear(gear),
+                                 -2.,
+                                 2.,
+                                 false,
+                                 oblique_origin,
+                                 oblique_axis,
+                                 oblique_reference);
+  const std::vector<const RigidSurface<3> *> shapes{
+      &cylinder, &sharp, &torus, &plane, &barrel, &extruded};
+  for (const RigidSurface<3> *shape : shapes)
+    for (const Point<3> &x : random_points(Point<3>(-25, -25, -25), Point<3>(25, 25, 25), 200, 5))
+    {
+      const SurfaceProjection<3> p = shape->project(x);
+      ASSERT_TRUE(p.valid);
+      EXPECT_LE((shape->point_at(p.coordinates) - p.point).norm(), 1e-12 * 25.)
+          << shape->name() << ": x = " << x;
+      std::array<double, 2> shifted = p.coordinates;
+      for (unsigned int a = 0; a < 2; ++a)
+        shifted[a] += shape->coordinate_periods()[a];
+      EXPECT_LE((shape->point_at(shifted) - p.point).norm(), 1e-11 * 25.) << shape->name();
+    }
+  // the cylinder R = 5, w = 3, r_e = 0.5 in its canonical frame: a = 4.5, b = 1
+  const Frame3D frame(oblique_origin, oblique_axis, oblique_reference);
+  const double  a = 4.5, b = 1., quarter = 0.25 * numbers::PI;
+  const std::vector<std::pair<double, Point<3>>> known{
+      {2., Point<3>(2., 0., 1.5)},
+      {a + 0.5 * quarter,
+       Point<3>(
+           a + 0.5 * std::sin(0.25 * numbers::PI), 0., b + 0.5 * std::cos(0.25 * numbers::PI))},
+      {a + quarter + 0.5, Point<3>(5., 0., 0.5)},
+      {a + quarter + 2. * b + quarter, Point<3>(a, 0., -1.5)},
+      {a + quarter + 2. * b + quarter + a, Point<3>(0., 0., -1.5)}};
+  for (const auto &[s, canonical] : known)
+    EXPECT_LE((cylinder.point_at({{s, 0.}}) - frame.to_local(canonical)).norm(), 1e-12) << s;
+}

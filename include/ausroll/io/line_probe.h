@@ -22,7 +22,10 @@ namespace ausroll::io
    * points of straight lines in the reference configuration. Each output writes
    * `<dir>/probe_<name>_NNNN.csv` with columns
    * `time,s,x,y,ux,uy,stress_xx,stress_yy,stress_zz,stress_xy,von_mises_stress,equivalent_plastic_strain`
-   * (s = distance from the line's start).
+   * (3D: z and uz after y and uy), then (3D) `stress_xz,stress_yz` and the strain tensor
+   * `strain_xx,strain_yy,strain_zz,strain_xy` (3D: `strain_xz,strain_yz`; see
+   * postprocess::strain_tensor()); s = distance from the line's start; lengths in mm, stresses in
+   * MPa, strains dimensionless.
    * Set by `Postprocess/Line probes` = "name: x0, y0, x1, y1, n; ...".
    */
   template <int dim>
@@ -35,14 +38,16 @@ namespace ausroll::io
     /** Locate the sample points in the mesh (call after every mesh change). */
     void locate(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &dof_handler);
 
-    /** Write every probe for output number @p counter at pseudo-time @p time into @p directory. */
+    /** Write every probe for output number @p counter at pseudo-time @p time into @p directory
+        (@p small_strain: the model's kinematics, for the strain measure). */
     void write(const std::string                           &directory,
                const unsigned int                           counter,
                const double                                 time,
                const dealii::Mapping<dim>                  &mapping,
                const dealii::DoFHandler<dim>               &dof_handler,
                const dealii::TrilinosWrappers::MPI::Vector &solution,
-               const mechanics::MaterialPointStorage<dim>  &material_points) const;
+               const mechanics::MaterialPointStorage<dim>  &material_points,
+               const bool                                   small_strain) const;
 
     /** True if no probe is defined. */
     bool empty() const { return probes.empty(); }

@@ -25,4 +25,12 @@ namespace ausroll::io
    */
   void
   prepare_output_directory(const std::string &directory, const bool overwrite, const MPI_Comm comm);
+
+  /**
+   * Write @p text (the effective parameters of the run, SceneParameters::effective_parameters)
+   * to `<directory>/parameters.prm` on rank 0 of @p comm before the first step (collective:
+   * InputError naming the file on every rank if it cannot be written).
+   */
+  void
+  write_parameter_copy(const std::string &directory, const std::string &text, const MPI_Comm comm);
 } // namespace ausroll::io

@@ -12,8 +12,11 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/types.h>
 
+#include <mpi.h>
+
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace ausroll::io
 {
@@ -71,8 +74,67 @@ namespace ausroll::io
     double                          elapsed = 0.; ///< wall seconds since the start
   };
 
-  /** "step N  t = ...  (..%)  Newton k  cutbacks c  stick/slip a/b  DoFs n  elapsed  ETA". */
-  void write_step_line(dealii::ConditionalOStream &log, const StepSummary &s);
+  /**
+   * "step N  t = ...  (..%)  Newton k  cutbacks c  stick/slip a/b  DoFs n  elapsed  ETA". The ETA
+   * is @p eta (seconds; EtaEstimator).
+   */
+  void write_step_line(dealii::ConditionalOStream &log, const StepSummary &s, const double eta);
+
+  /**
+   * The remaining wall time of a run from the progress so far. The cost of a unit of load
+   * parameter is measured twice: over the whole run so far (this process) and over its recent
+   * part (the steps covering the last third of the load done, at least the last 3 steps); the
+   * larger rate times the load parameter still to go is the ETA. A run whose steps grow dearer
+   * (the contact zone grows, the mesh is refined near the die, more Newton iterations) is then
+   * not promised the cheap start's pace.
+   */
+  class EtaEstimator
+  {
+  public:
+    /** Start of the run: load fraction @p start_fraction done at wall time @p elapsed. */
+    void start(const double start_fraction, const double elapsed);
+    /** A converged step: load fraction @p fraction done at wall time @p elapsed (seconds). */
+    void add(const double fraction, const double elapsed);
+    /** Estimated wall seconds to load fraction 1. */
+    double eta() const;
+
+  private:
+    std::vector<std::pair<double, double>> progress; ///< (fraction, elapsed), first the start
+  };
+
+  /** What the closing summary of a run adds up (for the steps of this process). */
+  struct RunTotals
+  {
+    unsigned int             cutbacks = 0; ///< cutbacks of the accepted steps
+    std::vector<std::string> die_names;    ///< `Contact/Die N/Name`
+    std::vector<double>      peak_force;   ///< per die: max |force| over the converged steps
+    std::vector<double>      peak_time;    ///< per die: pseudo-time of that peak
+
+    /** Record the force magnitude @p force of die @p k (@p name) at pseudo-time @p time. */
+    void record_force(const unsigned int k,
+                      const std::string &name,
+                      const double       force,
+                      const double       time);
+  };
+
+  /** CPU seconds (user + system) used so far by this process (getrusage). */
+  double process_cpu_seconds();
+
+  /**
+   * The closing summary (`Output/Verbosity` quiet, normal, verbose) on @p log:
+   * "Newton: S solves in N steps (median M per step)[, D more in discarded attempts ...]", then
+   * "steps: N converged, C cutbacks", "peak die force: NAME |F|max = ... N at t = ..." per die,
+   * "time: W s wall, C s CPU (all ranks)" (CPU since the processes started, summed over
+   * @p comm; collective).
+   */
+  void write_run_summary(dealii::ConditionalOStream &log,
+                         const RunTotals            &totals,
+                         const std::size_t           steps,
+                         const unsigned long long    solves,
+                         const double                median,
+                         const unsigned long long    discarded,
+                         const double                wall_seconds,
+                         const MPI_Comm              comm);
 
   /** "step N name=value ..." with 5 digits (wall_seconds and step left out, |x| < 1e-12: 0). */
   void write_regression_line(dealii::ConditionalOStream &log,

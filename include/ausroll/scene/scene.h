@@ -13,6 +13,7 @@
 #include <ausroll/contact/non_candidate_penetration.h>
 #include <ausroll/io/history.h>
 #include <ausroll/io/postprocess/interface.h>
+#include <ausroll/io/run_log.h>
 #include <ausroll/material/constitutive_model.h>
 #include <ausroll/mechanics/assembler.h>
 #include <ausroll/mechanics/boundary_conditions.h>
@@ -193,6 +194,8 @@ namespace ausroll::scene
     /** Per die: a node was closed on it at the end of some step of this process (a run that
         ends with a die never touched stops with a message; not checked after --resume). */
     std::vector<bool> die_touched;
+    io::RunTotals     run_totals; ///< cutbacks, peak die forces, CPU at the start (the summary)
+    io::EtaEstimator  eta;        ///< the ETA of the step lines
 
     /** History columns, CSV files and VTU fields, in their fixed order (setup_postprocessing). */
     std::unique_ptr<io::PostprocessorSet<dim>> postprocessors;

@@ -48,6 +48,10 @@ namespace ausroll::scene
     /** Every entry "Section/Entry" -> value as parsed (stored in checkpoints, compared on resume).
      */
     std::map<std::string, std::string> entries;
+    /** Every entry as parsed (includes expanded, overrides applied) in deal.II's PRM format with
+        documentation; an entry that differs from its default ends in `# default: ...`. Written
+        to `<Output/Directory>/parameters.prm`, printed by `--print-parameters FILE.prm`. */
+    std::string effective_parameters;
 
     /** Declare every entry of every subsection. */
     static void declare_parameters(dealii::ParameterHandler &prm);

@@ -111,4 +111,16 @@ namespace ausroll::contact::surfaces
     frame.to_local(p);
     return p;
   }
+
+  Point<3> ExtrudedProfile::point_at(const std::array<double, 2> &coordinates) const
+  {
+    const Point<2> p = chain.point_at(coordinates[1]);
+    return frame.to_local(Point<3>(p[0], p[1], std::clamp(coordinates[0], z_lo, z_hi)));
+  }
+
+  std::array<double, 2> ExtrudedProfile::coordinate_periods() const
+  {
+    return {{0., chain.is_closed() ? chain.total_length() : 0.}};
+  }
+
 } // namespace ausroll::contact::surfaces

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/numbers.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ausroll::contact::surfaces
@@ -87,4 +88,32 @@ namespace ausroll::contact::surfaces
     frame.to_local(p);
     return p;
   }
+
+  Point<3> FiniteCylinder::point_at(const std::array<double, 2> &coordinates) const
+  {
+    // the meridian profile of project_meridian(), travelled by s
+    const double a = R - re, b = h - re, quarter = 0.5 * numbers::PI * re;
+    const double s_mantle = a + quarter, s_lower = s_mantle + 2. * b;
+    const double s = std::clamp(coordinates[0], 0., s_lower + quarter + a);
+    double       r, z;
+    if (s <= a)
+      r = s, z = h; // upper face
+    else if (s <= s_mantle)
+    {
+      const double alpha = re > 0. ? (s - a) / re : 0.; // from the face to the mantle
+      r = a + re * std::sin(alpha), z = b + re * std::cos(alpha);
+    }
+    else if (s <= s_lower)
+      r = R, z = b - (s - s_mantle);
+    else if (s <= s_lower + quarter)
+    {
+      const double alpha = re > 0. ? 0.5 * numbers::PI - (s - s_lower) / re : 0.;
+      r = a + re * std::sin(alpha), z = -b - re * std::cos(alpha);
+    }
+    else
+      r = a - (s - s_lower - quarter), z = -h; // lower face
+    const double theta = coordinates[1];
+    return frame.to_local(Point<3>(r * std::cos(theta), r * std::sin(theta), z));
+  }
+
 } // namespace ausroll::contact::surfaces

@@ -68,4 +68,12 @@ namespace ausroll::contact::surfaces
     frame.to_local(p);
     return p;
   }
+
+  Point<3> Plane::point_at(const std::array<double, 2> &coordinates) const
+  {
+    return frame.to_local(Point<3>(std::clamp(coordinates[0], -half[0], half[0]),
+                                   std::clamp(coordinates[1], -half[1], half[1]),
+                                   0.));
+  }
+
 } // namespace ausroll::contact::surfaces

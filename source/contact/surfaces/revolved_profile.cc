@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include <deal.II/base/numbers.h>
+
 namespace ausroll::contact::surfaces
 {
   using namespace dealii;
@@ -85,4 +87,17 @@ namespace ausroll::contact::surfaces
     frame.to_local(p);
     return p;
   }
+
+  Point<3> RevolvedProfile::point_at(const std::array<double, 2> &coordinates) const
+  {
+    const Point<2> m = chain.point_at(coordinates[0]); // (r, z)
+    const double   theta = coordinates[1];
+    return frame.to_local(Point<3>(m[0] * std::cos(theta), m[0] * std::sin(theta), m[1]));
+  }
+
+  std::array<double, 2> RevolvedProfile::coordinate_periods() const
+  {
+    return {{chain.is_closed() ? chain.total_length() : 0., 2. * numbers::PI}};
+  }
+
 } // namespace ausroll::contact::surfaces

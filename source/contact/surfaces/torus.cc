@@ -53,4 +53,13 @@ namespace ausroll::contact::surfaces
     frame.to_local(p);
     return p;
   }
+
+  Point<3> Torus::point_at(const std::array<double, 2> &coordinates) const
+  {
+    // s = -rho phi (project_meridian()); cos and sin wrap both coordinates
+    const double phi = -coordinates[0] / rho, theta = coordinates[1];
+    const double r = R + rho * std::cos(phi), z = rho * std::sin(phi);
+    return frame.to_local(Point<3>(r * std::cos(theta), r * std::sin(theta), z));
+  }
+
 } // namespace ausroll::contact::surfaces

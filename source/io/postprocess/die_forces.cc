@@ -82,6 +82,33 @@ namespace ausroll::io::postprocess
     row.emplace_back(prefix + "force_magnitude", force.norm());
   }
 
+  template <int dim>
+  Unit DieForces<dim>::unit(const std::string &column) const
+  {
+    auto ends_with = [&column](const std::string &suffix)
+    {
+      return column.size() >= suffix.size()
+             && column.compare(column.size() - suffix.size(), suffix.size(), suffix) == 0;
+    };
+    // the column name after its prefix die_<Name>_ (a die name may contain '_')
+    for (const char *force : {"_force_x",
+                              "_force_y",
+                              "_force_z",
+                              "_force_radial",
+                              "_force_tangential",
+                              "_force_axial",
+                              "_force_magnitude"})
+      if (ends_with(force))
+        return {"force", "N"};
+    if (ends_with("_torque"))
+      return {"moment", "N mm"};
+    if (ends_with("_angle") || ends_with("_revolution"))
+      return {"angle", "deg"};
+    if (ends_with("_stick_nodes") || ends_with("_slip_nodes"))
+      return {"count", "1"};
+    return {"length", "mm"}; // x, y, z, contact_length, contact_width, feed
+  }
+
   template class DieForces<2>;
   template class DieForces<3>;
 } // namespace ausroll::io::postprocess

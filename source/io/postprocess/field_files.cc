@@ -33,7 +33,8 @@ namespace ausroll::io::postprocess
                  input.mapping,
                  input.dof_handler,
                  input.solution,
-                 input.material_points);
+                 input.material_points,
+                 input.model.is_small_strain());
   }
 
   template <int dim>
@@ -81,6 +82,16 @@ namespace ausroll::io::postprocess
     fields.emplace_back(std::vector<std::string>{"contact_pressure", "contact_traction"},
                         &pressure_traction);
     fields.emplace_back(std::vector<std::string>{"contact_status", "contact_gap"}, &status_gap);
+  }
+
+  template <int dim>
+  Unit ContactFiles<dim>::unit(const std::string &name) const
+  {
+    if (name == "contact_gap")
+      return {"length", "mm"};
+    if (name == "contact_status")
+      return {"code", "1"};
+    return {"stress", "MPa"}; // contact_pressure, contact_traction
   }
 
   template class LineProbeFiles<2>;

@@ -1,5 +1,6 @@
 #include <ausroll/core/parse_utilities.h>
 #include <ausroll/io/postprocess/die_forces.h>
+#include <ausroll/io/postprocess/die_geometry.h>
 #include <ausroll/io/postprocess/field_files.h>
 #include <ausroll/io/postprocess/material_state.h>
 #include <ausroll/io/postprocess/monitor_points.h>
@@ -32,6 +33,7 @@ namespace ausroll::io
     set->add(std::make_unique<pp::BoundaryProfileFiles<dim>>(p.boundary_profile));
     set->add(std::make_unique<pp::ContactFiles<dim>>());
     set->add(std::make_unique<pp::CellAverages<dim>>());
+    set->add(std::make_unique<pp::DieGeometry<dim>>(output.write_vtu));
     return set;
   }
 

@@ -28,6 +28,18 @@ namespace ausroll::io::postprocess
       row.push_back(p);
   }
 
+  template <int dim>
+  Unit StepStatistics<dim>::unit(const std::string &column) const
+  {
+    if (column == "time")
+      return {"pseudo-time", "-"};
+    if (column == "wall_seconds")
+      return {"wall time", "s"};
+    if (column == "load_factor")
+      return {"dimensionless", "1"};
+    return {"count", "1"}; // step, newton_iterations, cutbacks, dofs, cells
+  }
+
   template class StepStatistics<2>;
   template class AppliedPressures<2>;
   template class StepStatistics<3>;

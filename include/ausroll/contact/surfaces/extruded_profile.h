@@ -54,6 +54,15 @@ namespace ausroll::contact::surfaces
                                  double                  max_distance
                                  = std::numeric_limits<double>::infinity()) const override;
 
+    /** The mantle point with coordinates (z, s): the profile point at s (wrapped or clamped as
+     * DieSurface::point_at()) at z clamped to [z0, z1]. The end caps are not reached (their
+     * coordinates are not unique). */
+    dealii::Point<3> point_at(const std::array<double, 2> &coordinates) const override;
+
+    /** z is not periodic; s has the period of a closed profile (0 for an open one). */
+    std::array<double, 2> coordinate_periods() const override;
+    ;
+
     /** The profile chain. */
     const DieSurface &profile() const { return chain; }
 

@@ -23,6 +23,8 @@
 #include <ausroll/contact/rigid_surface.h>
 #include <ausroll/contact/surfaces/frame_3d.h>
 
+#include <deal.II/base/numbers.h>
+
 namespace ausroll::contact::surfaces
 {
   /** A finite solid cylinder with optional edge radius (see the file documentation). */
@@ -46,6 +48,16 @@ namespace ausroll::contact::surfaces
     SurfaceProjection<3> project(const dealii::Point<3> &x,
                                  double                  max_distance
                                  = std::numeric_limits<double>::infinity()) const override;
+
+    /** The surface point with coordinates (s, theta): s along the meridian profile (clamped to [0,
+     * total length]), theta about the axis. */
+    dealii::Point<3> point_at(const std::array<double, 2> &coordinates) const override;
+
+    /** theta has the period 2 pi; s is not periodic. */
+    std::array<double, 2> coordinate_periods() const override
+    {
+      return {{0., 2. * dealii::numbers::PI}};
+    };
 
     /** The closest profile point to (r, z), r >= 0 (canonical meridian plane). */
     MeridianProjection project_meridian(double r, double z) const;

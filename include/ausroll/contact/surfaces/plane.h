@@ -45,6 +45,12 @@ namespace ausroll::contact::surfaces
                                  double                  max_distance
                                  = std::numeric_limits<double>::infinity()) const override;
 
+    /** The plane point with surface coordinates (xi_1, xi_2), clamped to the rectangle. */
+    dealii::Point<3> point_at(const std::array<double, 2> &coordinates) const override;
+
+    /** Not periodic: (0, 0). */
+    std::array<double, 2> coordinate_periods() const override { return {{0., 0.}}; };
+
   private:
     /** e1 = t_1, e2 = t_2, e3 = n at the reference point. */
     Frame3D frame;

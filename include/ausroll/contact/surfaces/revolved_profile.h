@@ -44,6 +44,15 @@ namespace ausroll::contact::surfaces
                                  double                  max_distance
                                  = std::numeric_limits<double>::infinity()) const override;
 
+    /** The surface point with coordinates (s, theta): the profile point at s
+     * (DieSurface::point_at(): wrapped on a closed profile, clamped on an open one) revolved by
+     * theta. */
+    dealii::Point<3> point_at(const std::array<double, 2> &coordinates) const override;
+
+    /** theta has the period 2 pi; s that of a closed profile (0 for an open one). */
+    std::array<double, 2> coordinate_periods() const override;
+    ;
+
     /** The profile chain. */
     const DieSurface &profile() const { return chain; }
 

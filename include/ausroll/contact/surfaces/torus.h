@@ -22,6 +22,8 @@
 #include <ausroll/contact/rigid_surface.h>
 #include <ausroll/contact/surfaces/frame_3d.h>
 
+#include <deal.II/base/numbers.h>
+
 namespace ausroll::contact::surfaces
 {
   /** A ring torus, material inside the tube (see the file documentation). */
@@ -44,6 +46,15 @@ namespace ausroll::contact::surfaces
     SurfaceProjection<3> project(const dealii::Point<3> &x,
                                  double                  max_distance
                                  = std::numeric_limits<double>::infinity()) const override;
+
+    /** The surface point with coordinates (s, theta) (s wrapped into [0, 2 pi rho)). */
+    dealii::Point<3> point_at(const std::array<double, 2> &coordinates) const override;
+
+    /** Both periodic: (2 pi rho, 2 pi). */
+    std::array<double, 2> coordinate_periods() const override
+    {
+      return {{2. * dealii::numbers::PI * rho, 2. * dealii::numbers::PI}};
+    };
 
     /** The closest profile point to (r, z), r >= 0 (canonical meridian plane). */
     MeridianProjection project_meridian(double r, double z) const;

@@ -14,11 +14,11 @@ namespace ausroll::io::postprocess
 {
   /**
    * History columns of every die of `Contact` in order, prefix `die_<Name>_` (`Contact/Die N/
-   * Name`): `force_x`, `force_y` (3D: and `force_z`; the force of the die on the workpiece, N),
-   * `x`, `y` (3D: and `z`), `angle` (the die pose: position of its reference point and rotation
-   * in degrees), `stick_nodes`,
-   * `slip_nodes`, `contact_length` (extent of the closed nodes' die coordinate s, along the die
-   * surface) and `contact_width` (extent of the closed nodes' current positions along the
+   * Name`): `force_x`, `force_y` (3D: and `force_z`; the force of the die on the workpiece, N;
+   * 2D: for `Model/Thickness`), `x`, `y` (3D: and `z`; mm), `angle` (deg; the die pose: position
+   * of its reference point and rotation in degrees), `stick_nodes`, `slip_nodes` (counts, 1),
+   * `contact_length` (mm; extent of the closed nodes' die coordinate s, along the die
+   * surface) and `contact_width` (mm; extent of the closed nodes' current positions along the
    * die-frame x axis: for a die pressed along y the contact width, the half-width a in a half
    * model with the symmetry axis at x = 0). A rolling die adds, right after its block, the
    * columns of rolling_columns() (3D: with `force_axial` and `torque`).
@@ -29,14 +29,15 @@ namespace ausroll::io::postprocess
   public:
     std::string name() const override { return "die forces"; }
     void        execute(const PostprocessInput<dim> &input, HistoryRow &row) const override;
+    Unit        unit(const std::string &column) const override;
   };
 
   /**
    * Columns of a die with `Motion/Type = rolling`, appended to @p row with @p prefix
    * (`die_<Name>_`): `revolution` theta_G (degrees, in the die's direction of revolution), `feed`
    * f = a_0 - a(t) (mm), and the die's force on the workpiece @p force resolved along the line of
-   * centres: `force_radial` (along e_r from the workpiece centre to the die centre: negative when
-   * the die presses), `force_tangential` (along e_t = k x e_r, counter-clockwise) and
+   * centres (N): `force_radial` (along e_r from the workpiece centre to the die centre: negative
+   * when the die presses), `force_tangential` (along e_t = k x e_r, counter-clockwise) and
    * `force_magnitude` |F|.
    */
   void rolling_columns(const contact::RollingMotion<2> &rolling,
@@ -47,7 +48,7 @@ namespace ausroll::io::postprocess
 
   /**
    * 3D columns of a die with `Motion/Type = rolling` (workpiece axis a = `Motion/Axis`):
-   * `revolution`, `feed` as in 2D; the force @p force of the die on the workpiece along
+   * `revolution`, `feed` as in 2D; the force @p force of the die on the workpiece (N) along
    * `force_radial` (e_r: from the workpiece axis to the die centre, orthogonal to a),
    * `force_tangential` (e_t = a x e_r), `force_axial` (a), `force_magnitude` |F|; and `torque`
    * = a . @p moment, the moment of the die's nodal forces on the workpiece about the die axis

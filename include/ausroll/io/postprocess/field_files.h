@@ -47,7 +47,8 @@ namespace ausroll::io::postprocess
   /**
    * With dies: `contact_NNNN.csv` (one row per candidate node that is closed or near a die:
    * `die,s,X,Y,x,y,gap,p_n,t_t,R_n,R_t,status`, see contact::ContactOperator::write_csv()) and the
-   * VTU nodal fields `contact_pressure`, `contact_traction`, `contact_status`, `contact_gap`.
+   * VTU nodal fields `contact_pressure`, `contact_traction` (stress, MPa), `contact_status` (a
+   * code, 1) and `contact_gap` (length, mm).
    */
   template <int dim>
   class ContactFiles : public Postprocessor<dim>
@@ -58,6 +59,7 @@ namespace ausroll::io::postprocess
                             const std::string           &directory,
                             const unsigned int           counter) override;
     void        nodal_fields(std::vector<NodalField> &fields) const override;
+    Unit        unit(const std::string &name) const override;
 
   private:
     bool                                  written = false; ///< vectors below hold the last output

@@ -67,6 +67,18 @@ namespace ausroll::io
   };
 
   /**
+   * What a history column or VTU array measures: the quantity ("force", "length", "stress",
+   * "angle", "count", "dimensionless", "pseudo-time", "wall time", ...) and its unit in the unit
+   * system of the shipped scenes (mm, N, MPa, degrees, s; units are consistent: a scene in
+   * other units reads them in its own). Written to history_units.csv and solution_units.csv.
+   */
+  struct Unit
+  {
+    std::string quantity; ///< e.g. "force"
+    std::string unit;     ///< e.g. "N"; "1" for dimensionless numbers and counts
+  };
+
+  /**
    * One postprocessor (in the manner of ASPECT's Postprocess::Interface). Override what applies:
    * history columns (execute), files per output (write_files), VTU fields (cell_fields,
    * nodal_fields). All calls are collective: every rank calls them in the same order.
@@ -112,6 +124,14 @@ namespace ausroll::io
     /** Append nodal VTU fields; the vectors must live until the next write_files(). Called after
         write_files() of the same output. */
     virtual void nodal_fields(std::vector<NodalField> &fields) const { (void)fields; }
+
+    /** Quantity and unit of the history column or VTU array @p name this postprocessor
+        produces (documented with the column in the class comment). */
+    virtual Unit unit(const std::string &name) const
+    {
+      (void)name;
+      return {};
+    }
   };
 
   /**
@@ -141,17 +161,22 @@ namespace ausroll::io
     /**
      * The history row of @p input: every postprocessor's columns in order. Throws
      * std::logic_error (internal error) if a column name occurs twice, naming the
-     * postprocessors that produce it.
+     * postprocessors that produce it. After open_vtu_writer(), the first row also writes
+     * `history_units.csv` (rank 0) into the output directory: the header `column,quantity,unit`
+     * and one line per history column in order (Postprocessor::unit(); "unknown" if its
+     * postprocessor declares none).
      */
-    HistoryRow history_row(const PostprocessInput<dim> &input) const;
+    HistoryRow history_row(const PostprocessInput<dim> &input);
 
     /** Open the VTU writer into @p directory (which must exist; call once, after the output
-        directory has been prepared). */
+        directory has been prepared); the units files are written there too. */
     void open_vtu_writer(const std::string &directory);
 
     /**
      * Output number @p counter into @p directory: every postprocessor's files in order, then (with
-     * `Output/Write VTU`) one VTU/PVTU with the displacement and every cell and nodal field.
+     * `Output/Write VTU`) one VTU/PVTU with the displacement and every cell and nodal field; the
+     * first VTU output also writes `solution_units.csv` (rank 0): `array,quantity,unit` per VTU
+     * array.
      */
     void write_output(const PostprocessInput<dim> &input,
                       const std::string           &directory,
@@ -168,5 +193,8 @@ namespace ausroll::io
     MPI_Comm                                         comm;    ///< communicator
     std::vector<std::unique_ptr<Postprocessor<dim>>> members; ///< in order
     std::unique_ptr<SolutionWriter<dim>>             writer;  ///< VTU/PVTU/PVD
+    std::string directory;                     ///< output directory (open_vtu_writer())
+    bool        history_units_written = false; ///< history_units.csv written
+    bool        vtu_units_written = false;     ///< solution_units.csv written
   };
 } // namespace ausroll::io

@@ -11,7 +11,8 @@
 namespace ausroll::io::postprocess
 {
   /**
-   * History columns `<name>_ux`, `<name>_uy` (`_uz` in 3D): the displacement (FE interpolation)
+   * History columns `<name>_ux`, `<name>_uy` (`_uz` in 3D; length, mm): the displacement (FE
+   * interpolation)
    * at each point of `Postprocess/Monitor points` = "name: x, y; ..." (reference coordinates),
    * in the order given. initialize() locates the points (after every mesh change) and throws
    * InputError naming the entry if a point lies outside the workpiece.
@@ -25,6 +26,11 @@ namespace ausroll::io::postprocess
     std::string name() const override { return "monitor points"; }
     void        initialize(const PostprocessInput<dim> &input) override;
     void        execute(const PostprocessInput<dim> &input, HistoryRow &row) const override;
+    Unit        unit(const std::string &column) const override
+    {
+      (void)column;
+      return {"length", "mm"};
+    }
 
   private:
     /** A monitored point: name, position, and where it lives (on its owning rank). */

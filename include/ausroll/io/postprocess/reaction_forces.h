@@ -13,7 +13,7 @@
 namespace ausroll::io::postprocess
 {
   /**
-   * History columns `reaction_<id>_x`, `reaction_<id>_y` (`_z` in 3D) for each id of
+   * History columns `reaction_<id>_x`, `reaction_<id>_y` (`_z` in 3D; force, N) for each id of
    * `Postprocess/Reaction boundaries`, in the order given: the sum of the residual f_int - f_ext
    * over the DoFs of that component on boundary <id>, i.e. the force the supports exert on the
    * body there, in the force unit of the assembly (for a bar in uniaxial stress sigma pulled on
@@ -29,6 +29,11 @@ namespace ausroll::io::postprocess
     std::string name() const override { return "reaction forces"; }
     void        initialize(const PostprocessInput<dim> &input) override;
     void        execute(const PostprocessInput<dim> &input, HistoryRow &row) const override;
+    Unit        unit(const std::string &column) const override
+    {
+      (void)column;
+      return {"force", "N"};
+    }
 
   private:
     std::vector<unsigned int> ids;

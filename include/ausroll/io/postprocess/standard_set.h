@@ -15,8 +15,8 @@ namespace ausroll::io
    * The postprocessors of a run writing as @p output says, configured by @p postprocess: step
    * statistics (load factor of @p end_time), applied pressures, monitor points, reaction forces,
    * die forces, yield excess (over @p yield_stress), line probes (@p quadrature_points per
-   * direction), boundary profiles, contact files, cell averages. The order is the order of the
-   * history columns and output files (part of the output format).
+   * direction), boundary profiles, contact files, cell averages, die geometry (dies.pvd). The order
+   * is the order of the history columns and output files (part of the output format).
    */
   template <int dim>
   std::unique_ptr<PostprocessorSet<dim>>

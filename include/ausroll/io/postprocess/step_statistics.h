@@ -9,10 +9,11 @@
 namespace ausroll::io::postprocess
 {
   /**
-   * History columns `step` (converged steps so far), `time` (pseudo-time t), `load_factor`
-   * (t / `Loading/End time`), `newton_iterations` and `cutbacks` (of the last step), `dofs`,
-   * `cells` (global) and `wall_seconds` (since the start of the process; not reproducible, left
-   * out of regression lines and history comparisons).
+   * History columns `step` (converged steps so far; count, 1), `time` (pseudo-time t, the unit
+   * of the `.prm`'s expressions: -), `load_factor` (t / `Loading/End time`; 1),
+   * `newton_iterations` and `cutbacks` (of the last step; counts, 1), `dofs`, `cells` (global;
+   * counts, 1) and `wall_seconds` (s, since the start of the process; not reproducible, left out
+   * of regression lines and history comparisons).
    */
   template <int dim>
   class StepStatistics : public Postprocessor<dim>
@@ -22,6 +23,7 @@ namespace ausroll::io::postprocess
     explicit StepStatistics(const double end_time);
     std::string name() const override { return "step statistics"; }
     void        execute(const PostprocessInput<dim> &input, HistoryRow &row) const override;
+    Unit        unit(const std::string &column) const override;
 
   private:
     double end_time;
@@ -30,7 +32,7 @@ namespace ausroll::io::postprocess
   /**
    * History columns of the pressure loads: one per `Boundary conditions/Condition N` of type
    * pressure, named and valued by mechanics::BoundaryConditions::pressure_values()
-   * (`pressure_<id>`, the expression evaluated at the origin at the current time).
+   * (`pressure_<id>`, the expression evaluated at the origin at the current time; stress, MPa).
    */
   template <int dim>
   class AppliedPressures : public Postprocessor<dim>
@@ -38,5 +40,10 @@ namespace ausroll::io::postprocess
   public:
     std::string name() const override { return "applied pressures"; }
     void        execute(const PostprocessInput<dim> &input, HistoryRow &row) const override;
+    Unit        unit(const std::string &column) const override
+    {
+      (void)column;
+      return {"stress", "MPa"};
+    }
   };
 } // namespace ausroll::io::postprocess
