@@ -136,7 +136,8 @@ namespace ausroll::scene
                                                              parameters.loading.end_time,
                                                              parameters.material.yield_stress,
                                                              parameters.model.quadrature_points,
-                                                             comm);
+                                                             comm,
+                                                             thermal != nullptr);
       if (thermal) // its columns after the mechanical ones
         postprocessors->add(std::make_unique<io::postprocess::TemperatureField<dim>>());
     }

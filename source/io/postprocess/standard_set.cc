@@ -17,12 +17,13 @@ namespace ausroll::io
                                const double                 end_time,
                                const double                 yield_stress,
                                const unsigned int           quadrature_points,
-                               const MPI_Comm               comm)
+                               const MPI_Comm               comm,
+                               const bool                   time_in_seconds)
   {
     // The order of these lines is the order of the history columns and output files.
     namespace pp = postprocess;
     auto set = std::make_unique<PostprocessorSet<dim>>(output, comm);
-    set->add(std::make_unique<pp::StepStatistics<dim>>(end_time));
+    set->add(std::make_unique<pp::StepStatistics<dim>>(end_time, time_in_seconds));
     set->add(std::make_unique<pp::AppliedPressures<dim>>());
     set->add(std::make_unique<pp::MonitorPoints<dim>>(p.monitor_points));
     set->add(std::make_unique<pp::ReactionForces<dim>>(
@@ -43,12 +44,14 @@ namespace ausroll::io
                                const double,
                                const double,
                                const unsigned int,
-                               const MPI_Comm);
+                               const MPI_Comm,
+                               const bool);
   template std::unique_ptr<PostprocessorSet<3>>
   make_standard_postprocessors(const OutputParameters &,
                                const PostprocessParameters &,
                                const double,
                                const double,
                                const unsigned int,
-                               const MPI_Comm);
+                               const MPI_Comm,
+                               const bool);
 } // namespace ausroll::io

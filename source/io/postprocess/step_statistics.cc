@@ -3,8 +3,9 @@
 namespace ausroll::io::postprocess
 {
   template <int dim>
-  StepStatistics<dim>::StepStatistics(const double end_time)
+  StepStatistics<dim>::StepStatistics(const double end_time, const bool time_in_seconds)
       : end_time(end_time)
+      , time_in_seconds(time_in_seconds)
   {
   }
 
@@ -32,7 +33,7 @@ namespace ausroll::io::postprocess
   Unit StepStatistics<dim>::unit(const std::string &column) const
   {
     if (column == "time")
-      return {"pseudo-time", "-"};
+      return time_in_seconds ? Unit{"time", "s"} : Unit{"pseudo-time", "-"};
     if (column == "wall_seconds")
       return {"wall time", "s"};
     if (column == "load_factor")

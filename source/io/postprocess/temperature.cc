@@ -82,5 +82,17 @@ namespace ausroll::io::postprocess
   }
 
   template class TemperatureField<2>;
+  template <int dim>
+  Unit TemperatureField<dim>::unit(const std::string &name) const
+  {
+    if (name == "temperature_rate")
+      return {"temperature rate", "K/s"};
+    if (name == "thermal_strain_temperature")
+      return {"temperature difference", "K"};
+    if (name.rfind("heat_", 0) == 0)
+      return {"heat flow", "mW"};   // N mm/s
+    return {"temperature", "degC"}; // T_min, T_max, T_mean, temperature
+  }
+
   template class TemperatureField<3>;
 } // namespace ausroll::io::postprocess

@@ -61,7 +61,6 @@ namespace ausroll::contact::surfaces
 
     /** z is not periodic; s has the period of a closed profile (0 for an open one). */
     std::array<double, 2> coordinate_periods() const override;
-    ;
 
     /** The profile chain. */
     const DieSurface &profile() const { return chain; }

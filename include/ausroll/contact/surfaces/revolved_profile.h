@@ -51,7 +51,6 @@ namespace ausroll::contact::surfaces
 
     /** theta has the period 2 pi; s that of a closed profile (0 for an open one). */
     std::array<double, 2> coordinate_periods() const override;
-    ;
 
     /** The profile chain. */
     const DieSurface &profile() const { return chain; }

@@ -25,5 +25,6 @@ namespace ausroll::io
                                const double                 end_time,
                                const double                 yield_stress,
                                const unsigned int           quadrature_points,
-                               const MPI_Comm               comm);
+                               const MPI_Comm               comm,
+                               const bool                   time_in_seconds = false);
 } // namespace ausroll::io

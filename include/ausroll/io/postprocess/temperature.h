@@ -38,6 +38,7 @@ namespace ausroll::io::postprocess
                      const unsigned int           counter) override;
 
     void nodal_fields(std::vector<NodalField> &fields) const override;
+    Unit unit(const std::string &name) const override;
 
   private:
     bool                                  written = false; ///< fields below hold the last output
