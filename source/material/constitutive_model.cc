@@ -1,6 +1,7 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/material/constitutive_model.h>
 #include <ausroll/material/finite_strain_log_model.h>
+#include <ausroll/material/phase_transformation_model.h>
 #include <ausroll/material/plane_stress_driver.h>
 #include <ausroll/material/small_strain_model.h>
 #include <ausroll/material/thermal_expansion_model.h>
@@ -42,7 +43,8 @@ namespace ausroll::material
   create_constitutive_model(const KinematicsType              kinematics,
                             const MaterialParameters         &material,
                             const bool                        plane_stress,
-                            const ThermalExpansionParameters *thermal)
+                            const ThermalExpansionParameters *thermal,
+                            const PhaseParameters            *phases)
   {
     std::unique_ptr<ConstitutiveModel> model;
     switch (kinematics)
@@ -65,6 +67,8 @@ namespace ausroll::material
     if (thermal != nullptr)
       model = std::make_unique<ThermalExpansionModel>(
           std::move(model), thermal->expansion, thermal->reference_temperature);
+    if (phases != nullptr)
+      model = std::make_unique<PhaseTransformationModel>(std::move(model), *phases);
     if (plane_stress)
       model = std::make_unique<PlaneStressDriver>(std::move(model));
     return model;

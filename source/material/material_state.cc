@@ -38,6 +38,8 @@ namespace ausroll::material
     data.push_back(equivalent_plastic_strain);
     data.push_back(temperature);
     data.push_back(plastic_work);
+    data.push_back(martensite);
+    data.push_back(carbon);
   }
 
   void MaterialState::unpack(const double *data)
@@ -51,7 +53,9 @@ namespace ausroll::material
         deformation_gradient[i][j] = *data++;
     equivalent_plastic_strain = *data++;
     temperature = *data++;
-    plastic_work = *data;
+    plastic_work = *data++;
+    martensite = *data++;
+    carbon = *data;
   }
 
   double MaterialState::von_mises_stress() const

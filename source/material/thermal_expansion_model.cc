@@ -20,14 +20,6 @@ namespace ausroll::material
     return 1. + expansion.value(temperature) * (temperature - reference_temperature);
   }
 
-  Tensor<2, 3> ThermalExpansionModel::mechanical_part(const Tensor<2, 3> &F,
-                                                      const double        theta) const
-  {
-    if (inner->is_small_strain())
-      return F - (theta - 1.) * Tensor<2, 3>(unit_symmetric_tensor<3>());
-    return F / theta;
-  }
-
   void ThermalExpansionModel::evaluate(const Tensor<2, 3>  &F,
                                        const MaterialState &old,
                                        MaterialState       &state,
@@ -35,13 +27,8 @@ namespace ausroll::material
                                        Tensor<4, 3>        *tangent) const
   {
     const double theta = thermal_stretch(old.temperature);
-    inner->evaluate(mechanical_part(F, theta), old, state, P, tangent);
-    if (!inner->is_small_strain())
-    {
-      P *= theta * theta;
-      if (tangent != nullptr)
-        *tangent *= theta;
-    }
+    inner->evaluate(remove_stretch(F, theta), old, state, P, tangent);
+    scale_response(P, tangent, theta);
     state.temperature = old.temperature;
     const double d_alpha = state.equivalent_plastic_strain - old.equivalent_plastic_strain;
     const double J = inner->is_small_strain() ? 1. : determinant(F);
@@ -53,6 +40,6 @@ namespace ausroll::material
 
   void ThermalExpansionModel::rebase(MaterialState &state, const Tensor<2, 3> &F) const
   {
-    inner->rebase(state, mechanical_part(F, thermal_stretch(state.temperature)));
+    inner->rebase(state, remove_stretch(F, thermal_stretch(state.temperature)));
   }
 } // namespace ausroll::material

@@ -5,7 +5,15 @@
  * heat equation over the converged step with its plastic heating; ThermalExpansionModel reads the
  * temperature the field writes into the material points).
  */
+#include <ausroll/core/exceptions.h>
 #include <ausroll/scene/scene.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
 
 namespace ausroll::scene
 {
@@ -41,6 +49,54 @@ namespace ausroll::scene
       return;
     thermal->initialize();
     thermal->set_point_temperatures(system.material_points, true);
+    if (parameters.phases.enabled)
+      initialize_carbon();
+    ++system.assembly_cache.state;
+  }
+
+  template <int dim>
+  void Scene<dim>::initialize_carbon()
+  {
+    const std::string   entry = "Phases/Carbon content";
+    FunctionParser<dim> carbon(1);
+    try
+    {
+      carbon.initialize(dim == 2 ? "x,y" : "x,y,z",
+                        parameters.phases.carbon_content,
+                        std::map<std::string, double>{{"pi", numbers::PI}});
+    }
+    catch (...)
+    {
+      throw InputError(entry + ": cannot parse '" + parameters.phases.carbon_content
+                       + "' (variables: x, y" + (dim == 3 ? ", z)" : ")"));
+    }
+    FEValues<dim> points(
+        system.mapping, system.fe, assembler->quadrature(), update_quadrature_points);
+    double lowest = std::numeric_limits<double>::max(), highest = -lowest;
+    for (const auto &cell : system.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        points.reinit(cell);
+        const auto states = system.material_points.get_data(cell);
+        for (unsigned int q = 0; q < states.size(); ++q)
+        {
+          const double C = carbon.value(points.quadrature_point(q));
+          lowest = std::isnan(C) ? -std::numeric_limits<double>::infinity() : std::min(lowest, C);
+          highest = std::max(highest, C);
+          states[q]->committed.carbon = states[q]->trial.carbon = C;
+          states[q]->committed.martensite = states[q]->trial.martensite = 0.;
+        }
+      }
+    // collective, so that every rank stops with the same message
+    lowest = Utilities::MPI::min(lowest, comm);
+    highest = Utilities::MPI::max(highest, comm);
+    if (!(lowest >= 0. && highest <= 2.1))
+    {
+      std::ostringstream range;
+      range << lowest << " to " << highest;
+      throw InputError(entry + ": '" + parameters.phases.carbon_content + "' ranges from "
+                       + range.str() + " wt% over the workpiece, outside 0 to 2.1 (steels)");
+    }
     ++system.assembly_cache.state;
   }
 

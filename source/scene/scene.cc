@@ -2,6 +2,7 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/geometry/workpiece.h>
 #include <ausroll/io/output_directory.h>
+#include <ausroll/io/postprocess/phases.h>
 #include <ausroll/io/postprocess/standard_set.h>
 #include <ausroll/io/postprocess/temperature.h>
 #include <ausroll/io/run_checkpoint.h>
@@ -37,7 +38,8 @@ namespace ausroll::scene
             prm.model.kinematics,
             prm.material,
             prm.model.planar_model == mechanics::PlanarModel::plane_stress,
-            prm.thermal.enabled ? &prm.thermal.expansion : nullptr))
+            prm.thermal.enabled ? &prm.thermal.expansion : nullptr,
+            prm.phases.enabled ? &prm.phases : nullptr))
       , boundary_conditions(prm.boundary_conditions)
       , contact(prm.contact)
       , contact_strategy(contact::make_status_strategy(prm.contact, contact, contact.active()))
@@ -81,6 +83,8 @@ namespace ausroll::scene
       setup_dof_dependents();
       system.initialize_material_points(assembler->quadrature().size());
       setup_thermal();
+      if (!resuming && parameters.phases.enabled)
+        initialize_carbon(); // its range errors before the output directory exists
       point_transfer = std::make_unique<adaptivity::MaterialPointTransfer<dim>>(
           system.triangulation,
           system.material_points,
@@ -140,6 +144,8 @@ namespace ausroll::scene
                                                              thermal != nullptr);
       if (thermal) // its columns after the mechanical ones
         postprocessors->add(std::make_unique<io::postprocess::TemperatureField<dim>>());
+      if (parameters.phases.enabled)
+        postprocessors->add(std::make_unique<io::postprocess::PhaseFractions<dim>>());
     }
     postprocessors->initialize(postprocess_input());
   }

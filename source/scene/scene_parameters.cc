@@ -28,6 +28,7 @@ namespace ausroll::scene
     io::PostprocessParameters::declare_parameters(prm);
     thermal::ThermalParameters::declare_parameters(prm);
     CouplingParameters::declare_parameters(prm);
+    material::PhaseParameters::declare_parameters(prm);
   }
 
   void SceneParameters::parse_parameters(ParameterHandler &prm, const std::string &input_directory)
@@ -49,6 +50,7 @@ namespace ausroll::scene
     postprocess.parse_parameters(prm);
     thermal.parse_parameters(prm, input_directory);
     coupling.parse_parameters(prm, thermal.enabled);
+    phases.parse_parameters(prm, thermal.enabled);
   }
 
   SceneParameters read_parameter_file(const std::string                    &filename,

@@ -46,6 +46,17 @@ conductance  an elastic block (10 x 5 mm, scenes/block_slide.prm) pressed by a f
 friction     the same block slid under the die (mu = 0.2, v = 0.1 mm/s) in full slip, insulated,
              no conductance: the heat into the block is the partition 0.5 of mu |F_y| v (every
              node slips the die's travel once the sliding is steady); 1e-6.
+dilatometry  the 3D block (free on its symmetry planes) with all faces cooled from 250 C to 20 C in 10
+             steps (specific heat 1: uniform temperature), carbon 0.8 wt%, Phases on, Coupling/
+             Iterations = 3 (the mechanics sees T(t_n)): the martensite fraction is Koistinen-
+             Marburger's 1 - exp(-0.011 (Ms - T)) with Andrews' Ms = 539 - 423 C - 30.4 Mn -
+             17.7 Ni - 12.1 Cr - 7.5 Mo (AISI 9310: 0.55, 3.25, 1.2, 0.12) below Ms, 0 above; the
+             block stays stress-free and its corner moves by (theta - 1) L with theta = (1 + alpha
+             (T - 20)) (1 + f dV/V)^(1/3), dV/V = 4.64 - 0.53 C per cent (finite strain; small
+             strain: the sum alpha (T - 20) + (1 + f dV/V)^(1/3) - 1), to 1e-8 of 0.01 mm; the
+             fraction to 1e-8: the interior temperature is the CG solution of the heat equation (to
+             1e-7 K here, and df/dT <= b), the history has 10 digits. The Newton tolerance is 1e-8 N (1e-12 of the internal forces E alpha dT A
+             ~ 1e4 N that cancel in the free block: 1e-10 is below their round-off).
 resume       the conduction run interrupted after step 25 (checkpoints every 10 steps) and resumed
              gives the same history as the uninterrupted run, to the last digit.
 
@@ -126,7 +137,8 @@ def conduction_error(ausroll, prm, steps, directory, settings=()):
 def main():
     ausroll, source = sys.argv[1], sys.argv[2]
     cases = sys.argv[3:] or ["conduction", "adiabatic", "free", "clamped", "plane_strain",
-                             "cylinder", "coupling", "conductance", "friction", "np2", "resume"]
+                             "cylinder", "coupling", "dilatometry", "conductance", "friction", "np2",
+                             "resume"]
     scenes = os.path.join(source, "tests", "checks", "scenes")
     strip = os.path.join(scenes, "thermal_conduction.prm")
     block = os.path.join(scenes, "thermal_block_3d.prm")
@@ -276,6 +288,44 @@ def main():
             checks(f"coupling (Iterations = {iterations}): mechanics at T(t_n-{lag}) to 1e-6", worst < 1e-6)
             if iterations > 1:
                 checks("coupling: two heat solves per step (the second changes nothing)", solves == 2 * (len(rows) - 1))
+
+    if "dilatometry" in cases:
+        carbon = 0.8
+        ms = 539 - 423 * carbon - 30.4 * 0.55 - 17.7 * 3.25 - 12.1 * 1.2 - 7.5 * 0.12
+        dv = (4.64 - 0.53 * carbon) / 100.0
+        cool = ["Boundary conditions/Number of conditions=3", f"Thermal/Thermal expansion={ALPHA}",
+                "Thermal/Initial temperature=250", "Thermal/Number of conditions=6", "Thermal/Specific heat=1",
+                "Phases/Enabled=true", f"Phases/Carbon content={carbon}", "Coupling/Iterations=3",
+                "Loading/Number of steps=10", "Solver/Absolute residual tolerance=1e-8"]
+        for face in range(6):
+            cool += [f"Thermal/Condition {face}/Boundary id={face}", f"Thermal/Condition {face}/Type=temperature",
+                     f"Thermal/Condition {face}/Value=250 - 230 * t"]
+        for kinematics in ["small strain", "finite strain"]:
+            directory = "dilatometry_" + kinematics.replace(" ", "_")
+            run(ausroll, block, cool + [f"Model/Kinematics={kinematics}"], directory)
+            rows = history(directory)
+            worst, worst_f, f_end = 0.0, 0.0, 0.0
+            for row in rows[1:]:
+                T = 250.0 - 230.0 * float(row["time"])
+                f = 1.0 - math.exp(-0.011 * (ms - T)) if T < ms else 0.0
+                theta_tr = (1.0 + f * dv) ** (1.0 / 3.0)
+                if kinematics == "finite strain":
+                    stretch = (1.0 + ALPHA * (T - 20.0)) * theta_tr - 1.0
+                else:
+                    stretch = ALPHA * (T - 20.0) + theta_tr - 1.0
+                for c, length in (("x", 10.0), ("y", 5.0), ("z", 4.0)):
+                    worst = max(worst, abs(float(row[f"corner_u{c}"]) - stretch * length) / 0.01)
+                for column in ("martensite_min", "martensite_max", "martensite_mean"):
+                    worst_f = max(worst_f, abs(float(row[column]) - f))
+                f_end = f
+            reactions = max(abs(float(rows[-1][f"reaction_{b}_{c}"])) for b in (1, 3) for c in "xyz")
+            print(f"dilatometry ({kinematics}): Ms {ms:.2f} C, final martensite {f_end:.6f}, worst corner "
+                  f"deviation {worst:.2e} of 0.01 mm, worst fraction deviation {worst_f:.2e}, "
+                  f"largest reaction {reactions:.2e} N")
+            checks(f"dilatometry ({kinematics}): corner (theta_th theta_tr - 1) L to 1e-8 of 0.01 mm",
+                   worst < 1e-8 and f_end > 0.5)
+            checks(f"dilatometry ({kinematics}): Koistinen-Marburger fraction to 1e-8", worst_f < 1e-8)
+            checks(f"dilatometry ({kinematics}): stress-free (reactions below 1e-6 N)", reactions < 1e-6)
 
     slide = os.path.join(scenes, "block_slide.prm")
     thermal_on = ["Thermal/Enabled=true", "Thermal/Thermal expansion=0", "Thermal/Initial temperature=20",

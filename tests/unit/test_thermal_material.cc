@@ -1,11 +1,13 @@
 /**
  * @file test_thermal_material.cc
  * Temperature-dependent properties (PropertyTable) and thermal strain around every kinematics
- * (ThermalExpansionModel): closed forms and finite-difference tangents.
+ * (ThermalExpansionModel) and the martensitic transformation (PhaseTransformationModel): closed
+ * forms and finite-difference tangents.
  */
 #include <ausroll/core/exceptions.h>
 #include <ausroll/material/constitutive_model.h>
 #include <ausroll/material/material_point.h>
+#include <ausroll/material/phase_transformation_model.h>
 #include <ausroll/material/property_table.h>
 #include <ausroll/material/thermal_expansion_model.h>
 
@@ -222,4 +224,64 @@ TEST(ThermalExpansionModel, PlasticWorkOfLinearHardeningIsExact)
   const double a1 = alpha[5], a2 = alpha.back();
   const double expected = 400. * (a2 - a1) + 0.5 * H * (a2 * a2 - a1 * a1);
   EXPECT_NEAR(work.back() - work[5], expected, 1e-10 * expected);
+}
+
+// ------------------------------------------------------------------ martensitic transformation
+
+namespace
+{
+  PhaseParameters phases()
+  {
+    PhaseParameters p;
+    p.enabled = true;
+    return p; // Andrews' Ms of AISI 9310, b = 0.011, dV/V = 4.64 - 0.53 C per cent
+  }
+} // namespace
+
+TEST(PhaseTransformationModel, KoistinenMarburgerIrreversibleAndAndrewsMs)
+{
+  // Ms(0.8 wt% C) by Andrews with 0.55 Mn, 3.25 Ni, 1.2 Cr, 0.12 Mo; the fraction follows
+  // 1 - exp(-b (Ms - T)) below Ms, is 0 above, never decreases on reheating.
+  const PhaseParameters            p = phases();
+  const ThermalExpansionParameters thermal = expansion(0.);
+  const PhaseTransformationModel   model(
+      create_constitutive_model(KinematicsType::small_strain, steel(), false, &thermal), p);
+  const double ms = 539. - 423. * 0.8 - 30.4 * 0.55 - 17.7 * 3.25 - 12.1 * 1.2 - 7.5 * 0.12;
+  EXPECT_NEAR(model.martensite_start(0.8), ms, 1e-12);
+  EXPECT_EQ(model.martensite_fraction(0., 0.8, ms + 1.), 0.);
+  const double f20 = 1. - std::exp(-0.011 * (ms - 20.));
+  EXPECT_NEAR(model.martensite_fraction(0., 0.8, 20.), f20, 1e-14);
+  EXPECT_EQ(model.martensite_fraction(f20, 0.8, 100.), f20); // reheated: no reversal
+  EXPECT_EQ(model.martensite_fraction(f20, 0.8, 400.), f20); // above Ms: kept
+  EXPECT_NEAR(model.transformation_stretch(1., 0.8), std::cbrt(1. + (4.64 - 0.424) / 100.), 1e-14);
+  EXPECT_EQ(model.transformation_stretch(0., 0.8), 1.);
+}
+
+TEST(PhaseTransformationModel, FreeTransformationIsStressFreeAndTangentsMatch)
+{
+  // A free body below Ms expands by theta_th theta_tr (multiplicative) or alpha dT + theta_tr - 1
+  // (small strain) and is stress-free (relative to E (theta - 1) ~ 2e3 MPa); dP/dF against central
+  // differences (1e-6 relative, as the isothermal models) elastic and plastic.
+  const PhaseParameters            p = phases();
+  const ThermalExpansionParameters thermal = expansion(1.2e-5);
+  const Tensor<2, 3>               F_plastic
+      = identity() + Tensor<2, 3>({{0.03, 0.01, 0.}, {0.005, -0.02, 0.002}, {0., 0.003, -0.008}});
+  for (const KinematicsType k : all_kinematics)
+  {
+    const auto    model = create_constitutive_model(k, steel(1000.), false, &thermal, &p);
+    MaterialState old;
+    old.temperature = 60.;
+    old.carbon = 0.8;
+    const auto   &pt = dynamic_cast<const PhaseTransformationModel &>(*model);
+    const double  f = pt.martensite_fraction(0., 0.8, 60.);
+    const double  th = 1. + 1.2e-5 * 40., tr = pt.transformation_stretch(f, 0.8);
+    const double  stretch = k == KinematicsType::small_strain ? th + tr - 1. : th * tr;
+    MaterialState state;
+    Tensor<2, 3>  P;
+    model->evaluate(stretch * identity(), old, state, P, nullptr);
+    EXPECT_GT(f, 0.4) << to_string(k);
+    EXPECT_NEAR(state.martensite, f, 1e-15) << to_string(k);
+    EXPECT_LT(max_abs(P), 1e-9 * 2000.) << to_string(k);
+    EXPECT_LT(ausroll::testing::tangent_error(*model, old, F_plastic), 1e-6) << to_string(k);
+  }
 }

@@ -26,6 +26,7 @@ namespace ausroll::material
   };
 
   struct ThermalExpansionParameters;
+  struct PhaseParameters;
 
   /** Parse a `Model/Kinematics` value. */
   KinematicsType parse_kinematics(const std::string &name);
@@ -91,12 +92,14 @@ namespace ausroll::material
 
   /**
    * Build the model for `Model/Kinematics` = @p kinematics with the plasticity of subsection
-   * `Material`. With @p thermal (thermal scenes) the model is wrapped in a ThermalExpansionModel;
+   * `Material`. With @p thermal (thermal scenes) the model is wrapped in a ThermalExpansionModel,
+   * with @p phases (`Phases/Enabled`) that in a PhaseTransformationModel;
    * with @p plane_stress the result is wrapped in a PlaneStressDriver.
    */
   std::unique_ptr<ConstitutiveModel>
   create_constitutive_model(const KinematicsType              kinematics,
                             const MaterialParameters         &material,
                             const bool                        plane_stress,
-                            const ThermalExpansionParameters *thermal = nullptr);
+                            const ThermalExpansionParameters *thermal = nullptr,
+                            const PhaseParameters            *phases = nullptr);
 } // namespace ausroll::material

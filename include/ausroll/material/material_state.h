@@ -36,6 +36,8 @@ namespace ausroll::material
    * - @ref plastic_work: accumulated plastic work per unit reference volume, int tau_vm d alpha
    *   (N mm / mm^3 = MPa; thermal scenes only: ThermalExpansionModel; the source of plastic
    *   heating).
+   * - @ref martensite, @ref carbon: martensite volume fraction (the rest is austenite) and carbon
+   *   content in wt% (scenes with `Phases/Enabled`: PhaseTransformationModel; 0 otherwise).
    */
   struct MaterialState
   {
@@ -47,12 +49,14 @@ namespace ausroll::material
     double                        equivalent_plastic_strain = 0.; ///< alpha
     double                        temperature = 0.;  ///< temperature of the state (thermal)
     double                        plastic_work = 0.; ///< int tau_vm d alpha (thermal)
+    double                        martensite = 0.;   ///< martensite volume fraction (phases)
+    double                        carbon = 0.;       ///< carbon content, wt% (phases)
 
     /** The undeformed, stress-free state: F = b_e = I, everything else zero. */
     MaterialState();
 
     /** Number of doubles written by pack(). */
-    static constexpr unsigned int n_packed_values = 6 * 4 + 9 + 3;
+    static constexpr unsigned int n_packed_values = 6 * 4 + 9 + 5;
 
     /** Append the state to @p data as n_packed_values doubles (mesh transfer, checkpoints). */
     void pack(std::vector<double> &data) const;

@@ -60,9 +60,6 @@ namespace ausroll::material
     double thermal_stretch(const double temperature) const;
 
   private:
-    /** The deformation gradient the inner model sees at total @p F and stretch @p theta. */
-    dealii::Tensor<2, 3> mechanical_part(const dealii::Tensor<2, 3> &F, const double theta) const;
-
     PropertyTable expansion;             ///< alpha(T), secant (1/K)
     double        reference_temperature; ///< stress-free temperature
   };

@@ -6,6 +6,8 @@
 
 #include <ausroll/material/constitutive_model.h>
 
+#include <deal.II/base/symmetric_tensor.h>
+
 #include <memory>
 
 namespace ausroll::material
@@ -39,6 +41,31 @@ namespace ausroll::material
     const PlasticityModel &plasticity() const override { return inner->plasticity(); }
 
   protected:
+    /**
+     * An isotropic stretch theta of the intermediate configuration (thermal or transformation
+     * strain): the deformation gradient the inner model sees at total @p F, F / theta
+     * (multiplicative), or F - (theta - 1) I for a small-strain inner model (additive strain).
+     */
+    dealii::Tensor<2, 3> remove_stretch(const dealii::Tensor<2, 3> &F, const double theta) const
+    {
+      if (inner->is_small_strain())
+        return F - (theta - 1.) * dealii::Tensor<2, 3>(dealii::unit_symmetric_tensor<3>());
+      return F / theta;
+    }
+
+    /** The inner model's response at remove_stretch(F, theta) per unit reference volume:
+        W(F) = theta^3 W_inner(F / theta), so P = theta^2 P_inner and dP/dF = theta dP_inner/dF
+        (small strain: unchanged). */
+    void
+    scale_response(dealii::Tensor<2, 3> &P, dealii::Tensor<4, 3> *tangent, const double theta) const
+    {
+      if (inner->is_small_strain())
+        return;
+      P *= theta * theta;
+      if (tangent != nullptr)
+        *tangent *= theta;
+    }
+
     std::unique_ptr<ConstitutiveModel> inner; ///< the wrapped model
   };
 } // namespace ausroll::material

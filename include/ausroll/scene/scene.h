@@ -126,8 +126,11 @@ namespace ausroll::scene
     /** Build the temperature field on the mechanical mesh and quadrature (after
         MechanicalSystem::setup_system()). */
     void setup_thermal();
-    /** Temperature at t = 0 on the field and the material points (not when resuming). */
+    /** Temperature at t = 0 on the field and the material points (not when resuming); with
+        `Phases/Enabled` also the carbon content of the points (all austenite). */
     void initialize_temperature();
+    /** `Phases/Carbon content` at the material points (InputError outside 0 to 2.1 wt%). */
+    void initialize_carbon();
     /** Isothermal split, thermal half: the heat equation over the converged mechanical @p step
         (before the material points are committed), then the new temperature at the points. */
     void thermal_step(const solver::LoadStep &step);

@@ -11,6 +11,7 @@
 #include <ausroll/io/checkpoint.h>
 #include <ausroll/io/output_parameters.h>
 #include <ausroll/material/material_parameters.h>
+#include <ausroll/material/phase_transformation_model.h>
 #include <ausroll/mechanics/boundary_conditions.h>
 #include <ausroll/mechanics/model_parameters.h>
 #include <ausroll/scene/coupling_parameters.h>
@@ -45,6 +46,7 @@ namespace ausroll::scene
     io::PostprocessParameters              postprocess;            ///< `Postprocess`
     thermal::ThermalParameters             thermal;                ///< `Thermal`
     CouplingParameters                     coupling;               ///< `Coupling`
+    material::PhaseParameters              phases;                 ///< `Phases`
     /** Every entry "Section/Entry" -> value as parsed (stored in checkpoints, compared on resume).
      */
     std::map<std::string, std::string> entries;

@@ -1,0 +1,77 @@
+/**
+ * @file phase_transformation_model.h
+ * Martensitic transformation of metastable austenite on cooling, and its volume change, around
+ * any constitutive model (subsection `Phases`).
+ */
+#pragma once
+
+#include <ausroll/material/wrapped_model.h>
+
+#include <deal.II/base/function_parser.h>
+
+#include <memory>
+#include <string>
+
+namespace ausroll::material
+{
+  /** The `Phases` subsection (martensite kinetics and transformation strain). */
+  struct PhaseParameters
+  {
+    bool        enabled = false;        ///< `Enabled`
+    std::string carbon_content = "0.2"; ///< `Carbon content` (wt%, expression of x, y, z)
+    /** `Martensite start temperature` Ms(C), expression of C (wt%); default Andrews' linear
+        relation with the other elements of AISI 9310. */
+    std::string martensite_start = "539 - 423*C - 30.4*0.55 - 17.7*3.25 - 12.1*1.2 - 7.5*0.12";
+    double      koistinen_marburger = 0.011; ///< `Koistinen-Marburger coefficient` b (1/K)
+    /** `Transformation volume change` austenite to martensite in per cent, expression of C. */
+    std::string volume_change = "4.64 - 0.53*C";
+
+    static void declare_parameters(dealii::ParameterHandler &prm);
+
+    /** Read the subsection; @p thermal: `Thermal/Enabled` (phases need the temperature). */
+    void parse_parameters(dealii::ParameterHandler &prm, const bool thermal);
+  };
+
+  /**
+   * Wraps a ConstitutiveModel (any kinematics, usually a ThermalExpansionModel) with the
+   * martensitic transformation of the austenite:
+   * - kinetics (Koistinen and Marburger 1959): the martensite fraction at the temperature T of
+   *   the state (old.temperature, as the thermal strain) is f = 1 - exp(-b (Ms(C) - T)) below Ms,
+   *   irreversible (it never decreases, nothing forms on heating or above Ms); explicit, like the
+   *   thermal strain: the mechanical step sees the fraction of the temperature of its start;
+   * - transformation strain: the isotropic volume change f dV/V(C) of the fraction transformed,
+   *   as a stretch theta_tr = (1 + f dV/V)^(1/3) (multiplicative, as ThermalExpansionModel:
+   *   P = theta_tr^2 P_inner(F / theta_tr), dP/dF = theta_tr dP_inner/dF) or, in small strain,
+   *   additive (theta_tr - 1) I.
+   * Not yet: transformation plasticity (TRIP), bainite, a mixture rule for the yield stress, the
+   * mechanical stabilisation of austenite.
+   */
+  class PhaseTransformationModel : public WrappedModel
+  {
+  public:
+    PhaseTransformationModel(std::unique_ptr<ConstitutiveModel> inner,
+                             const PhaseParameters             &parameters);
+
+    void evaluate(const dealii::Tensor<2, 3> &F,
+                  const MaterialState        &old,
+                  MaterialState              &state,
+                  dealii::Tensor<2, 3>       &P,
+                  dealii::Tensor<4, 3>       *tangent) const override;
+
+    void rebase(MaterialState &state, const dealii::Tensor<2, 3> &F) const override;
+
+    /** Ms at carbon content @p C (wt%). */
+    double martensite_start(const double C) const;
+
+    /** Martensite fraction after a step at temperature @p T from fraction @p f_old. */
+    double martensite_fraction(const double f_old, const double C, const double T) const;
+
+    /** theta_tr of fraction @p f at carbon @p C. */
+    double transformation_stretch(const double f, const double C) const;
+
+  private:
+    double                                     b;  ///< Koistinen-Marburger coefficient (1/K)
+    std::unique_ptr<dealii::FunctionParser<1>> ms; ///< Ms(C)
+    std::unique_ptr<dealii::FunctionParser<1>> dv; ///< dV/V(C) in per cent
+  };
+} // namespace ausroll::material

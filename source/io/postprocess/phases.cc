@@ -1,0 +1,63 @@
+#include <ausroll/io/postprocess/phases.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <limits>
+
+namespace ausroll::io::postprocess
+{
+  using namespace dealii;
+
+  template <int dim>
+  void PhaseFractions<dim>::execute(const PostprocessInput<dim> &input, HistoryRow &row) const
+  {
+    double lo = std::numeric_limits<double>::max(), hi = 0., integral = 0., volume = 0.;
+    for (const auto &cell : input.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        const auto   points = input.material_points.get_data(cell);
+        const double dV = cell->measure() / points.size(); // cell volume shared evenly
+        for (const auto &p : points)
+        {
+          lo = std::min(lo, p->committed.martensite);
+          hi = std::max(hi, p->committed.martensite);
+          integral += p->committed.martensite * dV;
+          volume += dV;
+        }
+      }
+    const MPI_Comm comm = input.dof_handler.get_communicator();
+    row.emplace_back("martensite_min", Utilities::MPI::min(lo, comm));
+    row.emplace_back("martensite_max", Utilities::MPI::max(hi, comm));
+    row.emplace_back("martensite_mean",
+                     Utilities::MPI::sum(integral, comm) / Utilities::MPI::sum(volume, comm));
+  }
+
+  template <int dim>
+  void PhaseFractions<dim>::cell_fields(const PostprocessInput<dim> &input,
+                                        std::vector<CellField>      &fields) const
+  {
+    const Triangulation<dim> &triangulation = input.dof_handler.get_triangulation();
+    const unsigned int        n = triangulation.n_active_cells();
+    Vector<float>             martensite(n), carbon(n);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        const auto points = input.material_points.get_data(cell);
+        double     f = 0., C = 0.;
+        for (const auto &p : points)
+        {
+          f += p->committed.martensite;
+          C += p->committed.carbon;
+        }
+        martensite[cell->active_cell_index()] = f / points.size();
+        carbon[cell->active_cell_index()] = C / points.size();
+      }
+    fields.emplace_back("martensite_fraction", martensite);
+    fields.emplace_back("carbon_content", carbon);
+  }
+
+  template class PhaseFractions<2>;
+  template class PhaseFractions<3>;
+} // namespace ausroll::io::postprocess

@@ -1,0 +1,140 @@
+#include <ausroll/core/exceptions.h>
+#include <ausroll/core/parse_utilities.h>
+#include <ausroll/material/phase_transformation_model.h>
+
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <cmath>
+
+namespace ausroll::material
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /** A function of the carbon content C (wt%), checked finite over 0 <= C <= 2.1. */
+    std::unique_ptr<FunctionParser<1>> carbon_function(const std::string &expression,
+                                                       const std::string &entry)
+    {
+      require_expression_length(expression, entry);
+      auto parser = std::make_unique<FunctionParser<1>>(1);
+      try
+      {
+        parser->initialize("C", expression, std::map<std::string, double>{});
+      }
+      catch (...)
+      {
+        throw InputError(entry + ": cannot parse '" + abbreviate(expression) + "' (variable: C)");
+      }
+      for (unsigned int i = 0; i <= 21; ++i)
+        if (!std::isfinite(parser->value(Point<1>(0.1 * i))))
+          throw InputError(entry + ": '" + abbreviate(expression)
+                           + "' is not finite at C = " + std::to_string(0.1 * i));
+      return parser;
+    }
+  } // namespace
+
+  void PhaseParameters::declare_parameters(ParameterHandler &prm)
+  {
+    const PhaseParameters defaults;
+    prm.enter_subsection("Phases");
+    prm.declare_entry("Enabled",
+                      "false",
+                      Patterns::Bool(),
+                      "Track the martensitic transformation of metastable austenite on cooling "
+                      "(needs Thermal/Enabled): martensite fraction by Koistinen-Marburger below "
+                      "Ms(C), and its volume change as a transformation strain. The material "
+                      "starts as austenite.");
+    prm.declare_entry("Carbon content",
+                      defaults.carbon_content,
+                      Patterns::Anything(),
+                      "Carbon content in wt% (0 to 2.1), an expression of x, y (z in 3D): the "
+                      "carburized case, e.g. '0.2 + 0.8 * exp(-(50 - sqrt(x^2 + y^2)) / 0.8)'.");
+    prm.declare_entry("Martensite start temperature",
+                      defaults.martensite_start,
+                      Patterns::Anything(),
+                      "Ms(C) in degrees C, an expression of the carbon content C (wt%). Default: "
+                      "Andrews' linear relation (J. Iron Steel Inst. 203, 1965) with the other "
+                      "elements of AISI 9310 (0.55 Mn, 3.25 Ni, 1.2 Cr, 0.12 Mo).");
+    prm.declare_entry("Koistinen-Marburger coefficient",
+                      "0.011",
+                      Patterns::Double(0.),
+                      "b in f = 1 - exp(-b (Ms - T)) (1/K; Koistinen and Marburger, Acta Metall. "
+                      "7, 1959: 0.011 for plain carbon steels).");
+    prm.declare_entry("Transformation volume change",
+                      defaults.volume_change,
+                      Patterns::Anything(),
+                      "Volume change austenite to martensite in per cent, an expression of C "
+                      "(default the dilatometric relation of the ASM Handbook vol. 4, Heat "
+                      "Treating: 4.64 - 0.53 C).");
+    prm.leave_subsection();
+  }
+
+  void PhaseParameters::parse_parameters(ParameterHandler &prm, const bool thermal)
+  {
+    prm.enter_subsection("Phases");
+    enabled = prm.get_bool("Enabled");
+    carbon_content = prm.get("Carbon content");
+    martensite_start = prm.get("Martensite start temperature");
+    koistinen_marburger = prm.get_double("Koistinen-Marburger coefficient");
+    volume_change = prm.get("Transformation volume change");
+    prm.leave_subsection();
+    require(!enabled || thermal,
+            "Phases/Enabled",
+            "the transformation follows the temperature: set Thermal/Enabled = true");
+    if (enabled)
+    {
+      carbon_function(martensite_start, "Phases/Martensite start temperature");
+      carbon_function(volume_change, "Phases/Transformation volume change");
+      require_expression_length(carbon_content, "Phases/Carbon content");
+    }
+  }
+
+  PhaseTransformationModel::PhaseTransformationModel(std::unique_ptr<ConstitutiveModel> model,
+                                                     const PhaseParameters             &prm)
+      : WrappedModel(std::move(model))
+      , b(prm.koistinen_marburger)
+      , ms(carbon_function(prm.martensite_start, "Phases/Martensite start temperature"))
+      , dv(carbon_function(prm.volume_change, "Phases/Transformation volume change"))
+  {
+  }
+
+  double PhaseTransformationModel::martensite_start(const double C) const
+  {
+    return ms->value(Point<1>(C));
+  }
+
+  double PhaseTransformationModel::martensite_fraction(const double f_old,
+                                                       const double C,
+                                                       const double T) const
+  {
+    const double Ms = martensite_start(C);
+    if (T >= Ms)
+      return f_old;
+    return std::max(f_old, 1. - std::exp(-b * (Ms - T)));
+  }
+
+  double PhaseTransformationModel::transformation_stretch(const double f, const double C) const
+  {
+    return f > 0. ? std::cbrt(1. + f * dv->value(Point<1>(C)) / 100.) : 1.;
+  }
+
+  void PhaseTransformationModel::evaluate(const Tensor<2, 3>  &F,
+                                          const MaterialState &old,
+                                          MaterialState       &state,
+                                          Tensor<2, 3>        &P,
+                                          Tensor<4, 3>        *tangent) const
+  {
+    const double f = martensite_fraction(old.martensite, old.carbon, old.temperature);
+    const double theta = transformation_stretch(f, old.carbon);
+    inner->evaluate(remove_stretch(F, theta), old, state, P, tangent);
+    scale_response(P, tangent, theta);
+    state.martensite = f;
+    state.carbon = old.carbon;
+  }
+
+  void PhaseTransformationModel::rebase(MaterialState &state, const Tensor<2, 3> &F) const
+  {
+    inner->rebase(state, remove_stretch(F, transformation_stretch(state.martensite, state.carbon)));
+  }
+} // namespace ausroll::material
