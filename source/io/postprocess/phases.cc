@@ -58,6 +58,14 @@ namespace ausroll::io::postprocess
     fields.emplace_back("carbon_content", carbon);
   }
 
+  template <int dim>
+  Unit PhaseFractions<dim>::unit(const std::string &name) const
+  {
+    if (name == "carbon_content")
+      return {"mass fraction", "wt%"};
+    return {"volume fraction", "1"}; // martensite_min, _max, _mean, martensite_fraction
+  }
+
   template class PhaseFractions<2>;
   template class PhaseFractions<3>;
 } // namespace ausroll::io::postprocess

@@ -81,7 +81,6 @@ namespace ausroll::io::postprocess
     out.emplace_back(names, &fields);
   }
 
-  template class TemperatureField<2>;
   template <int dim>
   Unit TemperatureField<dim>::unit(const std::string &name) const
   {
@@ -94,5 +93,6 @@ namespace ausroll::io::postprocess
     return {"temperature", "degC"}; // T_min, T_max, T_mean, temperature
   }
 
+  template class TemperatureField<2>;
   template class TemperatureField<3>;
 } // namespace ausroll::io::postprocess

@@ -25,5 +25,7 @@ namespace ausroll::io::postprocess
 
     void cell_fields(const PostprocessInput<dim> &input,
                      std::vector<CellField>      &fields) const override;
+
+    Unit unit(const std::string &name) const override;
   };
 } // namespace ausroll::io::postprocess
