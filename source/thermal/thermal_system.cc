@@ -355,8 +355,7 @@ namespace ausroll::thermal
                                              Vector                     *residual)
   {
     std::fill(balance.die_heat.begin(), balance.die_heat.end(), 0.);
-    if (contacts.empty())
-      return;
+    // (no early return on a rank without contact nodes: the die heat is summed over all ranks)
     // the temperature DoF at each contact node: the displacement x DoF of base index i of a
     // cell sits where the temperature DoF i of that cell sits (same degree, same mesh)
     std::unordered_map<types::global_dof_index, types::global_dof_index> thermal_dof;
@@ -364,7 +363,7 @@ namespace ausroll::thermal
     std::vector<types::global_dof_index> mechanical(mechanical_fe.n_dofs_per_cell()),
         own(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (!contacts.empty() && cell->is_locally_owned())
       {
         const typename DoFHandler<dim>::active_cell_iterator mechanical_cell(
             &triangulation, cell->level(), cell->index(), &displacement_dofs);
