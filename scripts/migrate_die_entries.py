@@ -11,7 +11,15 @@ Before, each `subsection Die N` held one flat list of shape entries (`Point`, `N
 `set` lines are taken out and written, in their order, into one block per shape subsection at
 the place of the first of them. `Points` and `Points file` go to `Arc line` when the block sets
 `Shape = arc line`, otherwise to `Polyline` (a warning is printed when the block does not set
-the shape). Prints what it changed; files without such entries are left alone.
+the shape). The friction entries moved into one subsection per law as well:
+`Friction coefficient` goes to the subsection of the block's `Friction` (`Coulomb` or
+`Coulomb capped by shear`; `Coulomb` when the block does not set another law, the default),
+`Friction factor` to `Tresca`, `Coulomb capped by shear` or `Levanov` (`Tresca` when the law
+takes no factor). The `Profile` subsection of `Revolved profile` and `Extruded profile` takes any
+2D shape: its chain entries moved into the subsection of the shape its `Type` names (`Points`,
+`Points file` to `Polyline` or `Arc line`, `Fillet radii` to `Arc line`, `Center`, `Radius`,
+`Material inside` to `Circle`, the gear sizes to `Involute gear`; `Type`, `Closed` and
+`Extend ends` stay). Prints what it changed; files without such entries are left alone.
 """
 
 import re
@@ -37,6 +45,23 @@ MOVED = {
     "Tip radius": "Involute gear",
     "Tooth axis angle": "Involute gear",
     "Teeth in sector": "Involute gear",
+    "Friction coefficient": None,  # the law's subsection
+    "Friction factor": None,
+}
+
+# the entries of the `Profile` subsection of `Revolved profile` / `Extruded profile` that moved
+# into the subsection of the 2D shape named by its `Type` (`Closed` and `Extend ends` stay)
+PROFILE_MOVED = {entry: target for entry, target in MOVED.items()
+                 if entry not in ("Point", "Normal", "Friction coefficient", "Friction factor")}
+
+# the defaults of the gear entries of the old `Profile` that differ from those of `Involute gear`
+OLD_PROFILE_GEAR_DEFAULTS = [("Number of teeth", "20"), ("Diametral pitch", "0"),
+                             ("Module", "1"), ("Pressure angle", "20")]
+
+# the laws that read each friction entry, and where it goes for another law
+FRICTION_TARGETS = {
+    "Friction coefficient": (("Coulomb", "Coulomb capped by shear"), "Coulomb"),
+    "Friction factor": (("Tresca", "Coulomb capped by shear", "Levanov"), "Tresca"),
 }
 
 SUBSECTION = re.compile(r"^(\s*)subsection\s+(.*?)\s*(#.*)?$")
@@ -44,17 +69,26 @@ END = re.compile(r"^\s*end\s*(#.*)?$")
 SET = re.compile(r"^(\s*)set\s+(.*?)\s*=\s*(.*)$")
 
 
-def migrate(lines, name):
+def value(line):
+    return SET.match(line).group(3).split("#")[0].strip()
+
+
+def migrate_blocks(lines, name, is_block, target_of, extra=lambda settings: {}):
+    """Move the `set` lines at the top level of every block whose subsection name satisfies
+    is_block into the subsection target_of(entry, settings, block) names (None: keep), written,
+    in their order, as one block per target at the place of the first moved line; settings are
+    the block's top-level entries (name -> value); extra(settings) gives further `set` lines per
+    target (entries whose default changed with the move) for a block that moves something."""
     out = []
     i = 0
     changed = 0
     while i < len(lines):
         m = SUBSECTION.match(lines[i])
-        if not (m and re.fullmatch(r"Die \d+", m.group(2))):
+        if not (m and is_block(m.group(2))):
             out.append(lines[i])
             i += 1
             continue
-        # a Die block: find its end (nested subsections counted)
+        # a block: find its end (nested subsections counted)
         depth, j = 0, i + 1
         while j < len(lines):
             if SUBSECTION.match(lines[j]):
@@ -65,16 +99,15 @@ def migrate(lines, name):
                 depth -= 1
             j += 1
         block = lines[i + 1:j]
-        shape = None
+        settings = {}
         depth = 0
         for line in block:
             if SUBSECTION.match(line):
                 depth += 1
             elif END.match(line):
                 depth -= 1
-            s = SET.match(line)
-            if depth == 0 and s and s.group(2) == "Shape":
-                shape = s.group(3).split("#")[0].strip()
+            elif depth == 0 and SET.match(line):
+                settings[SET.match(line).group(2)] = value(line)
         groups, order, kept, first = {}, [], [], None
         depth = 0
         for line in block:
@@ -83,13 +116,8 @@ def migrate(lines, name):
             elif END.match(line):
                 depth -= 1
             s = SET.match(line)
-            if depth == 0 and s and s.group(2) in MOVED:
-                target = MOVED[s.group(2)]
-                if target is None:
-                    target = "Arc line" if shape == "arc line" else "Polyline"
-                    if shape is None:
-                        print(f"{name}: {m.group(2)} sets {s.group(2)} without Shape: "
-                              f"moved to {target}, check", file=sys.stderr)
+            target = target_of(s.group(2), settings, m.group(2)) if depth == 0 and s else None
+            if target is not None:
                 if target not in groups:
                     groups[target] = []
                     order.append(target)
@@ -100,6 +128,14 @@ def migrate(lines, name):
                 changed += 1
             else:
                 kept.append(line)
+        if order:
+            for target, added in extra(settings).items():
+                if target not in groups:
+                    continue
+                indent = SET.match(groups[target][0]).group(1)
+                for entry, default in added:
+                    groups[target].append(f"{indent}set {entry} = {default}  # the old default\n")
+                    changed += 1
         out.append(lines[i])
         for line in kept:
             if line is not None:
@@ -113,6 +149,43 @@ def migrate(lines, name):
                 out.append(f"{indent}end\n")
         i = j
     return out, changed
+
+
+def migrate(lines, name):
+    def die_target(entry, settings, block):
+        if entry not in MOVED:
+            return None
+        if entry in FRICTION_TARGETS:
+            laws, other = FRICTION_TARGETS[entry]
+            law = settings.get("Friction", "Coulomb")
+            return law if law in laws else other
+        if MOVED[entry] is not None:
+            return MOVED[entry]
+        shape = settings.get("Shape")
+        target = "Arc line" if shape == "arc line" else "Polyline"
+        if shape is None:
+            print(f"{name}: {block} sets {entry} without Shape: moved to {target}, check",
+                  file=sys.stderr)
+        return target
+
+    def profile_target(entry, settings, block):
+        if entry not in PROFILE_MOVED:
+            return None
+        if PROFILE_MOVED[entry] is not None:
+            return PROFILE_MOVED[entry]
+        return "Arc line" if settings.get("Type", "polyline") == "arc line" else "Polyline"
+
+    out, changed = migrate_blocks(lines, name, lambda b: re.fullmatch(r"Die \d+", b), die_target)
+    def profile_defaults(settings):
+        # the gear size defaults of `Profile` differ from those of the 2D `Involute gear`
+        if settings.get("Type") != "involute gear":
+            return {}
+        return {"Involute gear": [(entry, default) for entry, default in OLD_PROFILE_GEAR_DEFAULTS
+                                  if entry not in settings]}
+
+    out, changed_profiles = migrate_blocks(out, name, lambda b: b == "Profile", profile_target,
+                                           profile_defaults)
+    return out, changed + changed_profiles
 
 
 def main():

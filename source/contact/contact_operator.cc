@@ -41,11 +41,12 @@ namespace ausroll::contact
   } // namespace
 
   template <int dim>
-  ContactOperator<dim>::ContactOperator(const ContactParameters &parameters)
+  ContactOperator<dim>::ContactOperator(const ContactParameters &parameters,
+                                        const FrictionContext   &friction)
       : parameters(parameters)
   {
     for (unsigned int k = 0; k < parameters.dies.size(); ++k)
-      dies.push_back(std::make_unique<RigidDie<dim>>(parameters.dies[k], k));
+      dies.push_back(std::make_unique<RigidDie<dim>>(parameters.dies[k], k, friction));
   }
 
   template <int dim>

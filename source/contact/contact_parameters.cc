@@ -1,8 +1,7 @@
 #include <ausroll/contact/contact_parameters.h>
+#include <ausroll/contact/friction_law.h>
 #include <ausroll/core/exceptions.h>
 #include <ausroll/core/parse_utilities.h>
-
-#include <cmath>
 
 namespace ausroll::contact
 {
@@ -10,11 +9,7 @@ namespace ausroll::contact
 
   bool is_3d_shape(const std::string &shape)
   {
-    for (const std::string &name :
-         split_and_trim(surfaces::Surface3DParameters::shape_names(), '|'))
-      if (name == shape)
-        return true;
-    return false;
+    return surfaces::ShapeRegistry<3>::instance().contains(shape);
   }
 
   void ContactParameters::declare_parameters(ParameterHandler &prm)
@@ -75,29 +70,20 @@ namespace ausroll::contact
                         "Label in history.csv (die_<Name>_force_x, ...).");
       prm.declare_entry("Shape",
                         "flat",
-                        Patterns::Selection(surfaces::shape_selection() + "|"
-                                            + surfaces::Surface3DParameters::shape_names()),
+                        Patterns::Selection(surfaces::shape_selection()),
                         "Die surface, described in die coordinates in the subsection of the same "
                         "name (Flat, Circle, ...); the Motion places it. 2D runs: "
-                            + surfaces::shape_selection()
-                            + "; 3D runs: " + surfaces::Surface3DParameters::shape_names() + ".");
-      prm.declare_entry(
-          "Friction",
-          "Coulomb",
-          Patterns::Selection("frictionless|Coulomb|sticking|Tresca|Coulomb capped by shear"),
-          "Friction law: frictionless; Coulomb, |t_t| <= mu p (Friction coefficient); sticking "
-          "(no slip); Tresca (constant shear), |t_t| <= m k (Friction factor); Coulomb capped by "
-          "shear, |t_t| <= min(mu p, m k). k = sigma_0 / sqrt(3) from the workpiece's initial "
-          "yield stress Material/Yield stress.");
-      prm.declare_entry("Friction coefficient",
-                        "0",
-                        Patterns::Double(0.),
-                        "Coulomb coefficient mu (Coulomb, Coulomb capped by shear).");
-      prm.declare_entry("Friction factor",
-                        "0",
-                        Patterns::Double(0., 1.),
-                        "Friction factor m of the shear laws (Tresca, Coulomb capped by shear): "
-                        "tau = m k, 0 frictionless, 1 the full shear yield stress k.");
+                            + surfaces::ShapeRegistry<2>::instance().descriptions() + ". 3D runs: "
+                            + surfaces::ShapeRegistry<3>::instance().descriptions() + ".");
+      prm.declare_entry("Friction",
+                        "Coulomb",
+                        Patterns::Selection(FrictionRegistry::instance().selection()),
+                        "Friction law, its entries in the subsection of the same name: "
+                            + FrictionRegistry::instance().descriptions()
+                            + ". k = sigma_0 / sqrt(3) from the workpiece's initial yield stress "
+                              "Material/Yield stress; a zero coefficient or factor is "
+                              "frictionless.");
+      FrictionRegistry::instance().declare_subsections(prm);
       prm.declare_entry(
           "Candidate boundaries",
           "",
@@ -109,7 +95,6 @@ namespace ausroll::contact
           Patterns::Double(0.),
           "Nodes farther than this from the die are not projected (mm; 0: no limit).");
       surfaces::declare_shape_parameters(prm);
-      surfaces::Surface3DParameters::declare_parameters(prm);
 
       prm.enter_subsection("Motion");
       prm.declare_entry("Type",
@@ -188,7 +173,18 @@ namespace ausroll::contact
 
   std::map<std::string, std::string> ContactParameters::moved_entries()
   {
-    return surfaces::moved_die_entries(max_dies);
+    std::map<std::string, std::string> moved = surfaces::moved_die_entries(max_dies);
+    // the friction entries moved into the subsection of their law
+    for (unsigned int k = 0; k < max_dies; ++k)
+    {
+      const std::string die = "Contact/Die " + std::to_string(k) + "/";
+      moved[die + "Friction coefficient"] = "`" + die + "Coulomb/Friction coefficient` or `" + die
+                                            + "Coulomb capped by shear/Friction coefficient`";
+      moved[die + "Friction factor"] = "`" + die + "Tresca/Friction factor`, `" + die
+                                       + "Coulomb capped by shear/Friction factor` or `" + die
+                                       + "Levanov/Friction factor`";
+    }
+    return moved;
   }
 
   void ContactParameters::parse_parameters(ParameterHandler  &prm,
@@ -219,30 +215,19 @@ namespace ausroll::contact
       d.shape = prm.get("Shape");
       if (is_3d_shape(d.shape))
       {
-        auto surface_3d = std::make_shared<surfaces::Surface3DParameters>();
-        surface_3d->parse_parameters(prm, path, input_directory);
-        d.surface_3d = surface_3d;
-        d.surface_path = path;
+        const auto &shapes = surfaces::ShapeRegistry<3>::instance();
+        d.surface_path = shapes.path(d.shape, path);
+        d.surface_3d = shapes.parse(d.shape, prm, path, input_directory, "Shape");
       }
       else
       {
-        d.surface_path = surfaces::shape_path(d.shape, path);
-        d.surface = surfaces::parse_shape_parameters(d.shape, prm, path, input_directory);
+        const auto &shapes = surfaces::ShapeRegistry<2>::instance();
+        d.surface_path = shapes.path(d.shape, path);
+        d.surface = shapes.parse(d.shape, prm, path, input_directory, "Shape");
       }
-      const std::string friction = prm.get("Friction");
-      d.friction = friction == "frictionless" ? FrictionLawType::frictionless
-                   : friction == "Coulomb"    ? FrictionLawType::coulomb
-                   : friction == "sticking"   ? FrictionLawType::sticking
-                   : friction == "Tresca"     ? FrictionLawType::tresca
-                                              : FrictionLawType::coulomb_capped_by_shear;
-      d.friction_coefficient = prm.get_double("Friction coefficient");
-      d.friction_factor = prm.get_double("Friction factor");
-      // A law whose limit is zero is frictionless (closed nodes slip at once).
-      if ((d.friction == FrictionLawType::coulomb && d.friction_coefficient == 0.)
-          || (d.friction == FrictionLawType::tresca && d.friction_factor == 0.)
-          || (d.friction == FrictionLawType::coulomb_capped_by_shear
-              && (d.friction_coefficient == 0. || d.friction_factor == 0.)))
-        d.friction = FrictionLawType::frictionless;
+      d.friction_law = prm.get("Friction");
+      d.friction = FrictionRegistry::instance().parse(
+          d.friction_law, prm, path, input_directory, "Friction");
       d.candidate_boundaries
           = parse_unsigned_list(prm.get("Candidate boundaries"), path + "Candidate boundaries");
       d.search_distance = prm.get_double("Search distance");
@@ -282,19 +267,4 @@ namespace ausroll::contact
     prm.leave_subsection();
   }
 
-  void ContactParameters::set_workpiece_yield_stress(const double sigma_0)
-  {
-    for (unsigned int k = 0; k < dies.size(); ++k)
-    {
-      DieParameters &d = dies[k];
-      if (d.friction != FrictionLawType::tresca
-          && d.friction != FrictionLawType::coulomb_capped_by_shear)
-        continue;
-      require(sigma_0 > 0.,
-              "Contact/Die " + std::to_string(k) + "/Friction",
-              "the shear friction laws need the shear yield stress k = sigma_0 / sqrt(3) of a "
-              "plastic workpiece: set Material/Yield criterion = von Mises");
-      d.shear_yield_stress = sigma_0 / std::sqrt(3.);
-    }
-  }
 } // namespace ausroll::contact

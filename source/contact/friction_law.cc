@@ -1,7 +1,7 @@
+#include <ausroll/contact/friction/frictionless.h>
 #include <ausroll/contact/friction_law.h>
 
 #include <cmath>
-#include <limits>
 
 namespace ausroll::contact
 {
@@ -29,27 +29,29 @@ namespace ausroll::contact
     return response;
   }
 
-  SlipLimit StickingFriction::slip_limit(const double, const double) const
+  FrictionContext friction_context(const material::MaterialParameters &material)
   {
-    return {std::numeric_limits<double>::infinity(), 0.};
+    FrictionContext context;
+    if (material.yield_criterion != material::YieldCriterion::none)
+      context.shear_yield_stress = material.yield_stress / std::sqrt(3.);
+    return context;
   }
 
-  std::unique_ptr<FrictionLaw> create_friction_law(const DieParameters &p)
+  double required_shear_yield_stress(const FrictionContext &context, const std::string &die_path)
   {
-    switch (p.friction)
-    {
-      case FrictionLawType::frictionless:
-        return std::make_unique<Frictionless>();
-      case FrictionLawType::coulomb:
-        return std::make_unique<CoulombFriction>(p.friction_coefficient);
-      case FrictionLawType::sticking:
-        return std::make_unique<StickingFriction>();
-      case FrictionLawType::tresca:
-        return std::make_unique<TrescaFriction>(p.friction_factor, p.shear_yield_stress);
-      case FrictionLawType::coulomb_capped_by_shear:
-        return std::make_unique<CappedCoulombFriction>(
-            p.friction_coefficient, p.friction_factor, p.shear_yield_stress);
-    }
-    return std::make_unique<Frictionless>();
+    require(context.shear_yield_stress > 0.,
+            die_path + "Friction",
+            "the shear friction laws need the shear yield stress k = sigma_0 / sqrt(3) of a "
+            "plastic workpiece: set Material/Yield criterion = von Mises");
+    return context.shear_yield_stress;
+  }
+
+  std::unique_ptr<FrictionLaw> create_friction_law(const DieParameters   &p,
+                                                   const FrictionContext &context,
+                                                   const std::string     &die_path)
+  {
+    if (p.friction == nullptr || p.friction->frictionless())
+      return std::make_unique<Frictionless>();
+    return p.friction->create(context, die_path);
   }
 } // namespace ausroll::contact

@@ -154,7 +154,7 @@ namespace ausroll::contact
         require(p.surface != nullptr,
                 path + "Shape",
                 "'" + p.shape + "' is a 3D die shape; a 2D run needs one of "
-                    + surfaces::shape_selection());
+                    + surfaces::ShapeRegistry<2>::instance().selection());
         return p.surface->create(p.surface_path);
       }
       else
@@ -162,16 +162,19 @@ namespace ausroll::contact
         require(p.surface_3d != nullptr,
                 path + "Shape",
                 "'" + p.shape + "' is a 2D die shape; a 3D run needs one of "
-                    + surfaces::Surface3DParameters::shape_names());
-        return p.surface_3d->create(p.shape);
+                    + surfaces::ShapeRegistry<3>::instance().selection());
+        return p.surface_3d->create(p.surface_path);
       }
     }
   } // namespace
 
   template <int dim>
-  RigidDie<dim>::RigidDie(const DieParameters &p, const unsigned int index)
+  RigidDie<dim>::RigidDie(const DieParameters   &p,
+                          const unsigned int     index,
+                          const FrictionContext &friction_context)
       : name(p.name)
-      , friction(create_friction_law(p))
+      , friction(
+            create_friction_law(p, friction_context, "Contact/Die " + std::to_string(index) + "/"))
       , search_distance(p.search_distance > 0. ? p.search_distance
                                                : std::numeric_limits<double>::infinity())
       , shape(make_surface<dim>(p, "Contact/Die " + std::to_string(index) + "/"))

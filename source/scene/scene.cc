@@ -41,7 +41,7 @@ namespace ausroll::scene
             prm.thermal.enabled ? &prm.thermal.expansion : nullptr,
             prm.phases.enabled ? &prm.phases : nullptr))
       , boundary_conditions(prm.boundary_conditions)
-      , contact(prm.contact)
+      , contact(prm.contact, contact::friction_context(prm.material))
       , contact_strategy(contact::make_status_strategy(prm.contact, contact, contact.active()))
       , linear_solver(prm.solver.linear)
       , newton(prm.solver)

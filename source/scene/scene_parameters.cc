@@ -39,9 +39,6 @@ namespace ausroll::scene
     material.parse_parameters(prm);
     boundary_conditions.parse_parameters(prm);
     contact.parse_parameters(prm, input_directory);
-    // k of the shear friction laws: the workpiece's initial yield stress (forming practice)
-    contact.set_workpiece_yield_stress(
-        material.yield_criterion == material::YieldCriterion::none ? 0. : material.yield_stress);
     adaptivity.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
     loading.parse_parameters(prm);

@@ -2,13 +2,14 @@
 """Friction law at every node of the contact CSV of one step, and assertions on history.csv.
 
   check_friction_law.py OUTDIR TIME [--mu MU] [--friction-factor M --yield-stress SIGMA0]
-                        [--tol TOL] [--slip-nodes N] [--total-force]
+                        [--levanov] [--tol TOL] [--slip-nodes N] [--total-force]
                         [-- CHECK_HISTORY_ARGS ...]
 
 OUTDIR holds history.csv and contact_NNNN.csv; the CSV whose header says `# time = TIME` is
 checked. The slip limit of a node is tau_lim = min(MU p_n, M k) with the shear yield stress
 k = SIGMA0 / sqrt(3) (Coulomb: --mu only; Tresca: --friction-factor and --yield-stress only;
-Coulomb capped by shear: all three). Checks:
+Coulomb capped by shear: all three); with --levanov it is Levanov's
+tau_lim = M k (1 - exp(-1.25 p_n / SIGMA0)). Checks:
   - every slipping node (status 2): |t_t| = tau_lim, relative to max(tau_lim, 1e-12 MPa);
   - every sticking node (status 1): |t_t| <= tau_lim (1 + TOL);
   - with --slip-nodes: exactly N nodes slip;
@@ -54,6 +55,8 @@ def main():
     p.add_argument("--mu", type=float, default=math.inf)
     p.add_argument("--friction-factor", type=float)
     p.add_argument("--yield-stress", type=float)
+    p.add_argument("--levanov", action="store_true",
+                   help="Levanov's law m k (1 - exp(-1.25 p_n / sigma_0)) instead of min(mu p_n, m k)")
     p.add_argument("--tol", type=float, default=1e-8)
     p.add_argument("--slip-nodes", type=int)
     p.add_argument("--total-force", action="store_true")
@@ -68,7 +71,10 @@ def main():
         print(f"check_friction_law.py: no contact CSV at time {a.time} in {a.outdir}",
               file=sys.stderr)
         return 2
-    print(f"{contact}: tau_lim = min({a.mu:g} p_n, {shear:.10g} MPa)")
+    if a.levanov:
+        print(f"{contact}: tau_lim = {shear:.10g} MPa (1 - exp(-1.25 p_n / {a.yield_stress:g}))")
+    else:
+        print(f"{contact}: tau_lim = min({a.mu:g} p_n, {shear:.10g} MPa)")
     try:
         with open(contact) as f:
             rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
@@ -85,7 +91,10 @@ def main():
     for r in rows:
         status = int(float(r["status"]))
         p_n, t_t = float(r["p_n"]), float(r["t_t"])
-        limit = min(a.mu * p_n if math.isfinite(a.mu) else math.inf, shear)
+        if a.levanov:
+            limit = shear * (1.0 - math.exp(-1.25 * p_n / a.yield_stress))
+        else:
+            limit = min(a.mu * p_n if math.isfinite(a.mu) else math.inf, shear)
         if status == 2:
             n_slip += 1
             sum_rt += abs(float(r["R_t"]))

@@ -348,9 +348,9 @@ namespace
   {
     return "subsection Contact\nset Number of dies = 1\nset Strategy = " + strategy
            + "\nsubsection Die 0\nset Name = plate\nset Shape = plane\nset Friction = Coulomb\n"
-             "set Friction coefficient = "
+             "subsection Coulomb\nset Friction coefficient = "
            + std::to_string(mu)
-           + "\nset Candidate boundaries = 4\nsubsection Plane\nset Point = 0, 0, 0\n"
+           + "\nend\nset Candidate boundaries = 4\nsubsection Plane\nset Point = 0, 0, 0\n"
              "set Normal = 0, 0, 1\nend\nsubsection Motion\nset Type = prescribed\n"
              "set Translation = "
            + translation + "\nend\nend\nend\n";
@@ -445,8 +445,8 @@ namespace
     const std::string press = std::to_string(delta) + " * min(t, 1)";
     std::string contact = "subsection Contact\nset Number of dies = 1\nset Strategy = " + strategy
                           + "\nsubsection Die 0\nset Name = plate\nset Friction = Coulomb\n"
-                            "set Friction coefficient = "
-                          + std::to_string(slab_mu) + "\nset Candidate boundaries = 2\n";
+                            "subsection Coulomb\nset Friction coefficient = "
+                          + std::to_string(slab_mu) + "\nend\nset Candidate boundaries = 2\n";
     std::string conditions = "subsection Boundary conditions\nset Number of conditions = "
                              + std::string(dim == 2 ? "1" : "3")
                              + "\nsubsection Condition 0\nset Boundary id = 3\nset Type = fixed\n"

@@ -2,10 +2,17 @@
  * @file test_friction_law.cc
  * Unit tests of the friction laws (contact/friction_law.h): for each law the answer to a trial
  * tangential force (stick or slip, the admissible force) against the closed-form law, the
- * derivatives against central differences, and the `Friction` entries (factory, zero
- * coefficients, k = sigma_0 / sqrt(3), the message for an elastic workpiece).
+ * derivatives against central differences, and the `Friction` entries (registry, one subsection
+ * per law, zero coefficients, k = sigma_0 / sqrt(3) handed in through the factory, the message
+ * for an elastic workpiece). Levanov against its closed form and its limits p -> 0, p -> infinity.
  */
 #include <ausroll/contact/contact_parameters.h>
+#include <ausroll/contact/friction/capped_coulomb.h>
+#include <ausroll/contact/friction/coulomb.h>
+#include <ausroll/contact/friction/frictionless.h>
+#include <ausroll/contact/friction/levanov.h>
+#include <ausroll/contact/friction/sticking.h>
+#include <ausroll/contact/friction/tresca.h>
 #include <ausroll/contact/friction_law.h>
 #include <ausroll/core/exceptions.h>
 
@@ -15,6 +22,8 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace ausroll::contact;
 
@@ -163,48 +172,140 @@ TEST(FrictionLaw, CoulombCappedByShear)
 
 TEST(FrictionLaw, ParametersAndFactory)
 {
-  // the old entries keep their meaning
-  ContactParameters p = parse_die("  set Friction = Coulomb\n  set Friction coefficient = 0.3\n");
-  EXPECT_EQ(create_friction_law(p.dies[0])->name(), "Coulomb");
-  EXPECT_EQ(create_friction_law(p.dies[0])->slip_limit(10., 1.).slope, 0.3);
-  p = parse_die("  set Friction = Coulomb\n"); // mu = 0: frictionless
-  EXPECT_EQ(create_friction_law(p.dies[0])->name(), "frictionless");
-  p = parse_die("  set Friction = sticking\n");
-  EXPECT_EQ(create_friction_law(p.dies[0])->name(), "sticking");
+  const std::string die = "Contact/Die 0/";
+  // k = sigma_0 / sqrt(3) of a von Mises workpiece with sigma_0 = 300
+  ausroll::material::MaterialParameters material;
+  material.yield_stress = 300.;
+  const FrictionContext plastic = friction_context(material);
+  EXPECT_DOUBLE_EQ(plastic.shear_yield_stress, 300. / std::sqrt(3.));
+  material.yield_criterion = ausroll::material::YieldCriterion::none;
+  const FrictionContext elastic = friction_context(material);
+  EXPECT_EQ(elastic.shear_yield_stress, 0.);
 
-  // Tresca: k = sigma_0 / sqrt(3) of the initial yield stress
-  p = parse_die("  set Friction = Tresca\n  set Friction factor = 0.4\n");
-  p.set_workpiece_yield_stress(300.);
-  EXPECT_DOUBLE_EQ(p.dies[0].shear_yield_stress, 300. / std::sqrt(3.));
-  auto law = create_friction_law(p.dies[0]);
+  // every law is registered, in name order, and the selection lists them
+  EXPECT_EQ(FrictionRegistry::instance().selection(),
+            "Coulomb|Coulomb capped by shear|Levanov|Tresca|frictionless|sticking");
+
+  ContactParameters p
+      = parse_die("  set Friction = Coulomb\n  subsection Coulomb\n   set Friction coefficient = "
+                  "0.3\n  end\n");
+  EXPECT_EQ(create_friction_law(p.dies[0], plastic, die)->name(), "Coulomb");
+  EXPECT_EQ(create_friction_law(p.dies[0], plastic, die)->slip_limit(10., 1.).slope, 0.3);
+  p = parse_die("  set Friction = Coulomb\n"); // mu = 0: frictionless
+  EXPECT_TRUE(p.dies[0].friction->frictionless());
+  EXPECT_EQ(create_friction_law(p.dies[0], plastic, die)->name(), "frictionless");
+  p = parse_die("  set Friction = sticking\n");
+  EXPECT_EQ(create_friction_law(p.dies[0], elastic, die)->name(), "sticking");
+  p = parse_die("  set Friction = frictionless\n");
+  EXPECT_EQ(create_friction_law(p.dies[0], elastic, die)->name(), "frictionless");
+
+  // Tresca: k through the factory
+  p = parse_die("  set Friction = Tresca\n  subsection Tresca\n   set Friction factor = 0.4\n"
+                "  end\n");
+  auto law = create_friction_law(p.dies[0], plastic, die);
   EXPECT_EQ(law->name(), "Tresca");
   EXPECT_NEAR(law->slip_limit(0., 2.).value(0.), 2. * 0.4 * 300. / std::sqrt(3.), 1e-12);
 
-  p = parse_die("  set Friction = Coulomb capped by shear\n  set Friction coefficient = 0.2\n"
-                "  set Friction factor = 0.4\n");
-  p.set_workpiece_yield_stress(300.);
-  law = create_friction_law(p.dies[0]);
+  p = parse_die("  set Friction = Coulomb capped by shear\n"
+                "  subsection Coulomb capped by shear\n   set Friction coefficient = 0.2\n"
+                "   set Friction factor = 0.4\n  end\n");
+  law = create_friction_law(p.dies[0], plastic, die);
   EXPECT_EQ(law->name(), "Coulomb capped by shear");
   EXPECT_DOUBLE_EQ(law->slip_limit(1., 1.).slope, 0.2);
   EXPECT_EQ(law->slip_limit(1e6, 1.).slope, 0.);
 
-  p = parse_die("  set Friction = Tresca\n"); // m = 0: frictionless
-  EXPECT_EQ(create_friction_law(p.dies[0])->name(), "frictionless");
+  p = parse_die("  set Friction = Levanov\n  subsection Levanov\n   set Friction factor = 0.4\n"
+                "  end\n");
+  law = create_friction_law(p.dies[0], plastic, die);
+  EXPECT_EQ(law->name(), "Levanov");
+  EXPECT_NEAR(law->slip_limit(1e9, 1.).value(1e9), 0.4 * 300. / std::sqrt(3.), 1e-9);
+
+  p = parse_die("  set Friction = Tresca\n"); // m = 0: frictionless, also on an elastic workpiece
+  EXPECT_EQ(create_friction_law(p.dies[0], elastic, die)->name(), "frictionless");
 
   // an elastic workpiece has no k: the message names the entry
-  p = parse_die("  set Friction = Tresca\n  set Friction factor = 0.4\n");
-  try
+  // (each law's subsection declares only its own entries)
+  for (const auto &[law_name, entries] : std::vector<std::pair<std::string, std::string>>{
+           {"Tresca", "   set Friction factor = 0.4\n"},
+           {"Coulomb capped by shear",
+            "   set Friction coefficient = 0.1\n   set Friction factor = 0.4\n"},
+           {"Levanov", "   set Friction factor = 0.4\n"}})
   {
-    p.set_workpiece_yield_stress(0.);
-    FAIL() << "no InputError for Tresca on an elastic workpiece";
-  }
-  catch (const ausroll::InputError &e)
-  {
-    EXPECT_NE(std::string(e.what()).find("Contact/Die 0/Friction"), std::string::npos) << e.what();
+    p = parse_die("  set Friction = " + law_name + "\n  subsection " + law_name + "\n" + entries
+                  + "  end\n");
+    try
+    {
+      create_friction_law(p.dies[0], elastic, die);
+      ADD_FAILURE() << "no InputError for " << law_name << " on an elastic workpiece";
+    }
+    catch (const ausroll::InputError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("Contact/Die 0/Friction"), std::string::npos)
+          << e.what();
+    }
   }
   // out of range
   dealii::ParameterHandler prm;
   ContactParameters::declare_parameters(prm);
-  EXPECT_ANY_THROW(prm.parse_input_from_string(
-      "subsection Contact\n subsection Die 0\n  set Friction factor = 1.5\n end\nend\n"));
+  EXPECT_ANY_THROW(
+      prm.parse_input_from_string("subsection Contact\n subsection Die 0\n  subsection "
+                                  "Tresca\n   set Friction factor = 1.5\n  end\n end\nend\n"));
+  // the old flat entries name their new place
+  const auto moved = ContactParameters::moved_entries();
+  EXPECT_NE(moved.at("Contact/Die 0/Friction coefficient").find("Contact/Die 0/Coulomb/"),
+            std::string::npos);
+  EXPECT_NE(moved.at("Contact/Die 2/Friction factor").find("Contact/Die 2/Levanov/"),
+            std::string::npos);
+}
+
+// Levanov, tau = m k (1 - exp(-1.25 p / sigma_0)), k = sigma_0 / sqrt(3): the closed form at one
+// pressure, the limits p -> 0 (Coulomb-like, mu_0 = 1.25 m / sqrt(3)) and p -> infinity (Tresca,
+// m k), and the nodal slip limit (value and slope of T(R_n) = A tau(R_n / A)).
+TEST(FrictionLaw, Levanov)
+{
+  const double          sigma_0 = 300., k = sigma_0 / std::sqrt(3.), m = 0.6, area = 2.5;
+  const LevanovFriction law(m, k);
+  EXPECT_TRUE(law.sticks_when_closing());
+  EXPECT_TRUE(law.switches_stick_slip());
+  // a value: p = sigma_0 gives tau = m k (1 - e^-1.25) (independently evaluated: 1 - e^-1.25 =
+  // 0.7134952031398099)
+  EXPECT_NEAR(law.shear_stress(sigma_0), m * k * 0.7134952031398099, 1e-12 * m * k);
+  const SlipLimit at_sigma = law.slip_limit(sigma_0 * area, area);
+  EXPECT_NEAR(at_sigma.value(sigma_0 * area), m * k * area * 0.7134952031398099, 1e-10);
+  // p -> 0: tau / p -> 1.25 m k / sigma_0 = 1.25 m / sqrt(3) (relative error O(p / sigma_0))
+  const double mu_0 = 1.25 * m / std::sqrt(3.);
+  for (const double p : {1e-3, 1e-6})
+    EXPECT_NEAR(law.shear_stress(p) / p, mu_0, 2. * mu_0 * 1.25 * p / sigma_0) << p;
+  EXPECT_NEAR(law.slip_limit(1e-9 * area, area).slope, mu_0, 1e-9);
+  EXPECT_EQ(law.slip_limit(0., area).value(0.), 0.);
+  // tension: the tangent at 0, as Coulomb
+  EXPECT_DOUBLE_EQ(law.slip_limit(-1., area).slope, mu_0);
+  // p -> infinity: tau -> m k (exp(-1.25 * 40) ~ 2e-22 below it), slope -> 0
+  EXPECT_NEAR(law.shear_stress(40. * sigma_0), m * k, 1e-12 * m * k);
+  EXPECT_LT(law.slip_limit(40. * sigma_0 * area, area).slope, 1e-20);
+  // monotone between the limits and always below both
+  double previous = 0.;
+  for (double p = 1.; p < 2000.; p *= 1.5)
+  {
+    const double tau = law.shear_stress(p);
+    EXPECT_GT(tau, previous);
+    EXPECT_LE(tau, std::min(mu_0 * p, m * k) * (1. + 1e-14));
+    previous = tau;
+  }
+  // the affine piece is the tangent: its slope against central differences of T(R_n)
+  for (const double p : {10., 300., 900.})
+  {
+    const double h = 1e-4, R = p * area;
+    const double dT
+        = (law.slip_limit(R + h, area).value(R + h) - law.slip_limit(R - h, area).value(R - h))
+          / (2. * h);
+    EXPECT_NEAR(law.slip_limit(R, area).slope, dT, 1e-8) << p;
+  }
+  // stick inside the limit, slip outside with the limit as force
+  EXPECT_FALSE(law.respond(300. * area, 0.9 * law.shear_stress(300.) * area, area).slip);
+  const FrictionResponse r = law.respond(300. * area, -1e6, area);
+  EXPECT_TRUE(r.slip);
+  EXPECT_NEAR(r.tangential, -law.shear_stress(300.) * area, 1e-10);
+  expect_derivatives(law, 300. * area, 1e6, area);
+  expect_derivatives(law, 50. * area, -1e6, area);
 }

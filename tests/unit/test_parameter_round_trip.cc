@@ -4,6 +4,7 @@
  * printed again gives the identical text (defaults, and shipped scenes with many non-default
  * entries); the printed file also parses into the SceneParameters struct with the same values.
  */
+#include <ausroll/contact/friction/coulomb.h>
 #include <ausroll/io/parameter_documentation.h>
 #include <ausroll/scene/scene_parameters.h>
 
@@ -93,7 +94,14 @@ TEST(ParameterRoundTrip, ShippedScenesPrintParsePrintIdentical)
     EXPECT_EQ(a.contact.dies.size(), b.contact.dies.size()) << name;
     for (unsigned int k = 0; k < a.contact.dies.size(); ++k)
     {
-      EXPECT_EQ(a.contact.dies[k].friction_coefficient, b.contact.dies[k].friction_coefficient);
+      EXPECT_EQ(a.contact.dies[k].friction_law, b.contact.dies[k].friction_law);
+      const auto *coulomb_a = dynamic_cast<const ausroll::contact::CoulombParameters *>(
+          a.contact.dies[k].friction.get());
+      const auto *coulomb_b = dynamic_cast<const ausroll::contact::CoulombParameters *>(
+          b.contact.dies[k].friction.get());
+      ASSERT_EQ(coulomb_a == nullptr, coulomb_b == nullptr) << name;
+      if (coulomb_a != nullptr)
+        EXPECT_EQ(coulomb_a->mu, coulomb_b->mu) << name;
       EXPECT_EQ(a.contact.dies[k].translation, b.contact.dies[k].translation);
     }
     EXPECT_EQ(a.boundary_conditions.conditions.size(), b.boundary_conditions.conditions.size());

@@ -24,11 +24,12 @@
  *   outside an edge the projected point and the normal move continuously.
  */
 #include <ausroll/contact/die_surface.h>
+#include <ausroll/contact/surfaces/cone.h>
 #include <ausroll/contact/surfaces/extruded_profile.h>
 #include <ausroll/contact/surfaces/finite_cylinder.h>
 #include <ausroll/contact/surfaces/plane.h>
 #include <ausroll/contact/surfaces/revolved_profile.h>
-#include <ausroll/contact/surfaces/surface_factory_3d.h>
+#include <ausroll/contact/surfaces/surface_factory.h>
 #include <ausroll/contact/surfaces/torus.h>
 #include <ausroll/core/exceptions.h>
 #include <ausroll/geometry/involute_gear.h>
@@ -709,26 +710,117 @@ TEST(Surfaces3D, ProjectionIsContinuousAroundConvexEdges)
   }
 }
 
+// ============================================================================ cone
+// Cone (apex a, unit axis e, half angle alpha): the distance against the nearest of a dense set of
+// surface points (brute force, covering radius h), x = x_proj + g n, the gap sign against the
+// independent inside test {z > 0, r < z tan(alpha)}, and closed forms: a point on the axis inside
+// at depth z has g = -z sin(alpha); a point behind the apex projects onto the apex (g = |x - a|,
+// at_edge); a point off the surface along the outward normal n = cos(alpha) e_r - sin(alpha) e
+// of a surface point has exactly that point as projection.
+TEST(Surfaces3D, ConeAgainstBruteForce)
+{
+  const Point<3>     apex(1., -2., 0.5);
+  const Tensor<1, 3> e = vec(1., 1., 1.) / std::sqrt(3.);
+  const double       alpha = numbers::PI / 6.;
+  const Cone         cone(apex, vec(1., 1., 1.), alpha, vec(1., 0., 0.));
+  EXPECT_EQ(cone.name(), "cone");
+
+  // an orthonormal pair normal to the axis for the samples (any pair: the surface is round)
+  const Tensor<1, 3> e1 = (vec(1., 0., 0.) - (vec(1., 0., 0.) * e) * e)
+                          / (vec(1., 0., 0.) - (vec(1., 0., 0.) * e) * e).norm();
+  const Tensor<1, 3>    e2 = cross_product_3d(e, e1);
+  const double          h = 0.01;
+  std::vector<Point<3>> samples;
+  for (double rho = 0.; rho <= 6.; rho += h)
+  {
+    const double       r = rho * std::sin(alpha), z = rho * std::cos(alpha);
+    const unsigned int n = std::max(8u, static_cast<unsigned int>(2. * numbers::PI * r / h) + 1);
+    for (unsigned int k = 0; k < n; ++k)
+    {
+      const double t = 2. * numbers::PI * k / n;
+      samples.push_back(apex + z * e + r * (std::cos(t) * e1 + std::sin(t) * e2));
+    }
+  }
+  const auto inside = [&](const Point<3> &x)
+  {
+    const Tensor<1, 3> d = x - apex;
+    const double       z = d * e, r = (d - z * e).norm();
+    return z > 0. && r < z * std::tan(alpha);
+  };
+  expect_brute_force(cone,
+                     samples,
+                     h,
+                     random_points(apex + vec(-2., -2., -2.), apex + vec(2., 2., 2.), 300, 17),
+                     inside);
+
+  // closed forms
+  for (const double z : {0.3, 1., 2.5})
+  {
+    const SurfaceProjection<3> p = cone.project(apex + z * e);
+    expect_frame(apex + z * e, p);
+    EXPECT_NEAR(p.gap, -z * std::sin(alpha), 1e-12);
+  }
+  const Point<3>             behind = apex - 0.7 * e + 0.1 * e1;
+  const SurfaceProjection<3> q = cone.project(behind);
+  expect_frame(behind, q);
+  EXPECT_TRUE(q.at_edge);
+  EXPECT_NEAR(q.gap, (behind - apex).norm(), 1e-12);
+  EXPECT_LE((q.point - apex).norm(), 1e-12);
+  for (const double rho : {0.5, 2.})
+    for (const double t : {0., 1., 4.})
+      for (const double g : {-0.2, 0.1, 0.8})
+      {
+        const Tensor<1, 3>         e_r = std::cos(t) * e1 + std::sin(t) * e2;
+        const Point<3>             on = apex + rho * (std::cos(alpha) * e + std::sin(alpha) * e_r);
+        const Tensor<1, 3>         n = std::cos(alpha) * e_r - std::sin(alpha) * e;
+        const SurfaceProjection<3> p = cone.project(on + g * n);
+        EXPECT_LE((p.point - on).norm(), 1e-12);
+        EXPECT_LE((p.normal - n).norm(), 1e-12);
+        EXPECT_NEAR(p.gap, g, 1e-12);
+        EXPECT_FALSE(p.at_edge);
+        EXPECT_NEAR(p.curvatures[0], 0., 1e-14);
+        EXPECT_NEAR(p.curvatures[1], std::cos(alpha) / (rho * std::sin(alpha)), 1e-12);
+      }
+  // the search distance
+  EXPECT_FALSE(cone.project(apex + 3. * e1, 0.5).valid);
+  // a half angle outside (0, 90) degrees
+  EXPECT_THROW(Cone(apex, e, numbers::PI / 2.), ausroll::EntryError);
+}
+
 // ============================================================================ parameters
 namespace
 {
-  /** Parse @p text with the five subsections declared inside `Contact/Die 0`. */
-  Surface3DParameters parse(const std::string &text)
+  /**
+   * The die-shape entries of @p text (all shape subsections declared inside `Contact/Die 0`, as
+   * ContactParameters does); create() parses the named 3D shape's subsection through the registry
+   * and makes the surface.
+   */
+  struct ParsedShapes
   {
-    dealii::ParameterHandler prm;
-    prm.enter_subsection("Contact");
-    prm.enter_subsection("Die 0");
-    Surface3DParameters::declare_parameters(prm);
-    prm.leave_subsection();
-    prm.leave_subsection();
-    prm.parse_input_from_string(text);
-    prm.enter_subsection("Contact");
-    prm.enter_subsection("Die 0");
-    Surface3DParameters p;
-    p.parse_parameters(prm, "Contact/Die 0/", "/tmp/");
-    prm.leave_subsection();
-    prm.leave_subsection();
-    return p;
+    std::string text;
+
+    std::unique_ptr<const RigidSurface<3>> create(const std::string &shape) const
+    {
+      dealii::ParameterHandler prm;
+      prm.enter_subsection("Contact");
+      prm.enter_subsection("Die 0");
+      declare_shape_parameters(prm);
+      prm.leave_subsection();
+      prm.leave_subsection();
+      prm.parse_input_from_string(text);
+      prm.enter_subsection("Contact");
+      prm.enter_subsection("Die 0");
+      const auto &registry = ShapeRegistry<3>::instance();
+      const auto  parameters = registry.parse(shape, prm, "Contact/Die 0/", "/tmp/", "Shape");
+      prm.leave_subsection();
+      prm.leave_subsection();
+      return parameters->create(registry.path(shape, "Contact/Die 0/"));
+    }
+  };
+
+  ParsedShapes parse(const std::string &text)
+  {
+    return {text};
   }
 
   /** The message of the InputError thrown by @p f ("" if none). */
@@ -748,7 +840,7 @@ namespace
 
 TEST(Surfaces3D, ParametersBuildEveryShape)
 {
-  const Surface3DParameters p = parse(R"(
+  const ParsedShapes p = parse(R"(
 subsection Contact
   subsection Die 0
     subsection Cylinder
@@ -765,8 +857,10 @@ subsection Contact
     subsection Revolved profile
       subsection Profile
         set Type = arc line
-        set Points = 0, 2; 4, 2; 5, 0; 4, -2; 0, -2
-        set Fillet radii = 0.5
+        subsection Arc line
+          set Points = 0, 2; 4, 2; 5, 0; 4, -2; 0, -2
+          set Fillet radii = 0.5
+        end
       end
     end
     subsection Extruded profile
@@ -775,15 +869,18 @@ subsection Contact
       set End z = 2
       subsection Profile
         set Type = involute gear
-        set Number of teeth = 20
-        set Module = 2
+        subsection Involute gear
+          set Number of teeth = 20
+          set Diametral pitch = 0
+          set Module = 2
+        end
       end
     end
   end
 end
 )");
   for (const std::string shape :
-       {"plane", "cylinder", "torus", "revolved profile", "extruded profile"})
+       {"plane", "cylinder", "torus", "revolved profile", "extruded profile", "cone"})
   {
     const auto s = p.create(shape);
     ASSERT_TRUE(s);
@@ -820,32 +917,35 @@ TEST(Surfaces3D, ParameterErrorsNameTheFullPath)
                     "cylinder")
                 .find("Contact/Die 0/Cylinder/Axis"),
             std::string::npos);
+  EXPECT_EQ(
+      message("subsection Contact\nsubsection Die 0\nsubsection Revolved profile\nsubsection "
+              "Profile\nsubsection Polyline\nset Points = -1, 1; 2, 1\nend\nend\nend\nend\nend\n",
+              "revolved profile")
+          .rfind("Contact/Die 0/Revolved profile/Profile/Points: the profile must lie", 0),
+      0u);
   EXPECT_EQ(message("subsection Contact\nsubsection Die 0\nsubsection Revolved profile\nsubsection "
-                    "Profile\nset Points = -1, 1; 2, 1\nend\nend\nend\nend\n",
-                    "revolved profile")
-                .rfind("Contact/Die 0/Revolved profile/Profile/Points: the profile must lie", 0),
-            0u);
-  EXPECT_EQ(message("subsection Contact\nsubsection Die 0\nsubsection Revolved profile\nsubsection "
-                    "Profile\nset Points = 1, 1\nend\nend\nend\nend\n",
+                    "Profile\nsubsection Polyline\nset Points = 1, 1\nend\nend\nend\nend\nend\n",
                     "revolved profile"),
-            "Contact/Die 0/Revolved profile/Profile/Points: needs at least two points");
+            "Contact/Die 0/Revolved profile/Profile/Polyline/Points: needs at least two points");
   EXPECT_EQ(
       message("subsection Contact\nsubsection Die 0\nsubsection Extruded profile\nset Extent = "
               "finite\nset Start z = 2\nset End z = 1\nend\nend\nend\n",
               "extruded profile"),
       "Contact/Die 0/Extruded profile/End z: must be larger than Start z");
+  EXPECT_NE(message("subsection Contact\nsubsection Die 0\nsubsection Extruded profile\nsubsection "
+                    "Profile\nset Type = polyline\nsubsection Polyline\nset Points file = "
+                    "missing.txt\nend\nend\nend\n"
+                    "end\nend\n",
+                    "extruded profile")
+                .find("Contact/Die 0/Extruded profile/Profile/Polyline/Points file: "),
+            std::string::npos);
   EXPECT_NE(
-      message("subsection Contact\nsubsection Die 0\nsubsection Extruded profile\nsubsection "
-              "Profile\nset Type = polyline\nset Points file = missing.txt\nend\nend\nend\nend\n",
-              "extruded profile")
-          .find("Contact/Die 0/Extruded profile/Profile/Points file: "),
-      std::string::npos);
-  EXPECT_NE(
-      message("subsection Contact\nsubsection Die 0\nsubsection Extruded profile\nsubsection "
-              "Profile\nset Type = involute gear\nset Number of teeth = 20\nset Tip radius = 50\n"
-              "end\nend\nend\nend\n",
-              "extruded profile")
-          .find("Contact/Die 0/Extruded profile/Profile/Tip radius: "),
+      message(
+          "subsection Contact\nsubsection Die 0\nsubsection Extruded profile\nsubsection "
+          "Profile\nset Type = involute gear\nsubsection Involute gear\nset Number of teeth = 20\n"
+          "set Tip radius = 50\nend\nend\nend\nend\nend\n",
+          "extruded profile")
+          .find("Contact/Die 0/Extruded profile/Profile/Involute gear/Tip radius: "),
       std::string::npos);
 }
 
@@ -904,4 +1004,28 @@ TEST(Surfaces3D, PointAtInvertsTheProjection)
       {a + quarter + 2. * b + quarter + a, Point<3>(0., 0., -1.5)}};
   for (const auto &[s, canonical] : known)
     EXPECT_LE((cylinder.point_at({{s, 0.}}) - frame.to_local(canonical)).norm(), 1e-12) << s;
+
+TEST(Surfaces3D, ConeParameters)
+{
+  // every shape file's registration reached this executable (ausroll_core is an OBJECT library)
+  EXPECT_EQ(ShapeRegistry<2>::instance().selection(),
+            "arc line|circle|ellipse|flat|involute gear|polyline");
+  EXPECT_EQ(ShapeRegistry<3>::instance().selection(),
+            "cone|cylinder|extruded profile|plane|revolved profile|torus");
+
+  const ParsedShapes p = parse("subsection Contact\nsubsection Die 0\nsubsection Cone\n"
+                               "set Apex = 0, 0, 2\nset Axis = 0, 0, 1\nset Half angle = 60\n"
+                               "end\nend\nend\n");
+  const auto         cone = p.create("cone");
+  EXPECT_EQ(cone->name(), "cone");
+  // a point on the axis inside at depth 1: g = -sin(60 degrees)
+  EXPECT_NEAR(cone->project(Point<3>(0., 0., 3.)).gap, -std::sin(numbers::PI / 3.), 1e-12);
+  EXPECT_EQ(error_of(
+                [&]()
+                {
+                  parse("subsection Contact\nsubsection Die 0\nsubsection Cone\nset Axis = 0, 0, "
+                        "0\nend\nend\nend\n")
+                      .create("cone");
+                }),
+            "Contact/Die 0/Cone/Axis: must be a nonzero vector");
 }

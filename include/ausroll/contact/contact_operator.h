@@ -63,8 +63,10 @@ namespace ausroll::contact
   class ContactOperator : public ContactStatusSet
   {
   public:
-    /** Dies, friction laws and status-rule settings from @p parameters. */
-    explicit ContactOperator(const ContactParameters &parameters);
+    /** Dies, friction laws and status-rule settings from @p parameters; @p friction: what the
+        friction laws need from the workpiece (the shear yield stress of the shear laws). */
+    explicit ContactOperator(const ContactParameters &parameters,
+                             const FrictionContext   &friction = FrictionContext());
 
     /** True if at least one die is defined. */
     bool active() const { return !dies.empty(); }

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <ausroll/contact/surfaces/surface_factory.h>
-#include <ausroll/contact/surfaces/surface_factory_3d.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
@@ -27,16 +26,6 @@ namespace ausroll::contact
                          ///< (NOFEAP)
   };
 
-  /** Friction law of a die (`Friction`); the laws themselves are in friction_law.h. */
-  enum class FrictionLawType
-  {
-    frictionless,           ///< no tangential force: closed nodes slip freely
-    coulomb,                ///< |t_t| <= mu p_n
-    sticking,               ///< no slip (mu = infinity): closed nodes stick
-    tresca,                 ///< constant shear |t_t| <= m k
-    coulomb_capped_by_shear ///< |t_t| <= min(mu p_n, m k)
-  };
-
   /** Motion of a die (`Motion/Type`). */
   enum class MotionType
   {
@@ -45,32 +34,32 @@ namespace ausroll::contact
     rolling     ///< planetary rolling about the workpiece centre (NOFEAP section 4.1)
   };
 
+  class FrictionParameters;
+
   /** True if @p shape (a `Shape` value) names a 3D die shape. */
   bool is_3d_shape(const std::string &shape);
 
   /** One `Contact/Die N` subsection. */
   struct DieParameters
   {
-    std::string     name = "die"; ///< `Name` (history columns die_<name>_...)
-    FrictionLawType friction = FrictionLawType::coulomb; ///< `Friction`
-    double friction_coefficient = 0.; ///< `Friction coefficient` mu (Coulomb, capped Coulomb)
-    double friction_factor = 0.;      ///< `Friction factor` m (Tresca, capped Coulomb)
-    /** Shear yield stress k = sigma_0 / sqrt(3) of the workpiece (initial yield stress
-        `Material/Yield stress`), set by ContactParameters::set_workpiece_yield_stress(). */
-    double                    shear_yield_stress = 0.;
+    std::string name = "die";             ///< `Name` (history columns die_<name>_...)
+    std::string friction_law = "Coulomb"; ///< `Friction`: the name of a registered law
+    /** The entries of the law's own subsection `Contact/Die N/<Friction>` (friction_law.h); null:
+        frictionless. */
+    std::shared_ptr<const FrictionParameters> friction;
     std::vector<unsigned int> candidate_boundaries; ///< `Candidate boundaries` of the workpiece
     double                    search_distance = 0.; ///< `Search distance` (0: unlimited)
 
-    /** `Shape`: the name of a 2D shape (contact/surfaces/surface_factory.h) or of a 3D shape
-        (surfaces::Surface3DParameters::shape_names()); RigidDie<dim> checks the dimension. */
+    /** `Shape`: the name of a registered 2D or 3D die shape (contact/surfaces/
+        surface_factory.h); RigidDie<dim> checks the dimension. */
     std::string shape = "flat";
     /** The entries of a 2D shape's own subsection `Contact/Die N/<Shape>` (die-local
         coordinates, at t = 0 when the motion is the identity); set by parse_parameters(); null
         for a 3D shape. */
-    std::shared_ptr<const surfaces::ShapeParameters> surface;
-    /** The 3D shape subsections (`Plane`, `Cylinder`, ...) when `Shape` names a 3D shape, else
-        null. */
-    std::shared_ptr<const surfaces::Surface3DParameters> surface_3d;
+    std::shared_ptr<const surfaces::ShapeParameters<2>> surface;
+    /** The entries of a 3D shape's own subsection (`Plane`, `Cylinder`, ...); null for a 2D
+        shape. */
+    std::shared_ptr<const surfaces::ShapeParameters<3>> surface_3d;
     /** Full path of that subsection ("Contact/Die 0/Circle/") for error messages. */
     std::string surface_path;
 
@@ -117,18 +106,11 @@ namespace ausroll::contact
     /**
      * The entries an old `.prm` file may still set and where they are now: old full path ->
      * new full path(s) (the shape entries moved from `Contact/Die N` into one subsection per
-     * shape). Reading the file turns such an unknown entry into this message.
+     * shape, the friction entries into one subsection per law). Reading the file turns such an
+     * unknown entry into this message.
      */
     static std::map<std::string, std::string> moved_entries();
     /** Read subsection `Contact`. Files are resolved relative to @p input_directory. */
     void parse_parameters(dealii::ParameterHandler &prm, const std::string &input_directory);
-
-    /**
-     * The workpiece's initial uniaxial yield stress sigma_0 (`Material/Yield stress`; 0 for an
-     * elastic workpiece) gives k = sigma_0 / sqrt(3) of the shear friction laws (Tresca, Coulomb
-     * capped by shear). Call after parse_parameters(); throws InputError naming the die's
-     * `Friction` if such a law meets an elastic workpiece.
-     */
-    void set_workpiece_yield_stress(const double sigma_0);
   };
 } // namespace ausroll::contact

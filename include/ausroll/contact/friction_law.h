@@ -1,11 +1,18 @@
 /**
  * @file friction_law.h
- * Friction laws of a rigid die (`Contact/Die N/Friction`): frictionless, Coulomb, sticking,
- * Tresca (constant shear, tau = m k) and Coulomb capped by shear (tau = min(mu p, m k)).
+ * The friction law of a rigid die (`Contact/Die N/Friction`): the interface FrictionLaw, the
+ * parameters of a law (FrictionParameters, one subsection per law) and their registry. The laws
+ * are in contact/friction/, one file pair each: frictionless, Coulomb, sticking, Tresca (constant
+ * shear, tau = m k), Coulomb capped by shear (tau = min(mu p, m k)) and Levanov
+ * (tau = m k (1 - exp(-1.25 p / sigma_0))).
  */
 #pragma once
 
 #include <ausroll/contact/contact_parameters.h>
+#include <ausroll/core/registry.h>
+#include <ausroll/material/material_parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
 
 #include <memory>
 #include <string>
@@ -48,8 +55,9 @@ namespace ausroll::contact
    * Used by ContactOperator at one site per use: the status of a closing node
    * (sticks_when_closing()), the stick -> slip test and the slip force (respond(), slip_limit()),
    * the consistent row transform of a slipping node (slip_limit(): I + s T' t (x) n and the offset
-   * s T(0) t) and the load-increment-ratio event (slip_limit()). A new law is one class here, one
-   * factory line in create_friction_law() and one name in the `Friction` selection.
+   * s T(0) t) and the load-increment-ratio event (slip_limit()). A new law is one file pair
+   * contact/friction/<law>.{h,cc}: the law and its FrictionParameters, registered with
+   * AUSROLL_REGISTER_FRICTION_LAW; the `Friction` selection and its subsection follow.
    */
   class FrictionLaw
   {
@@ -82,91 +90,66 @@ namespace ausroll::contact
                              const double tolerance = 0.) const;
   };
 
-  /** `Friction = frictionless`: no tangential force, closed nodes slip. */
-  class Frictionless : public FrictionLaw
+  /** What a friction law may need from the workpiece (handed to its factory by the scene). */
+  struct FrictionContext
   {
-  public:
-    std::string name() const override { return "frictionless"; }
-    bool        sticks_when_closing() const override { return false; }
-    bool        switches_stick_slip() const override { return false; }
-    SlipLimit   slip_limit(const double, const double) const override { return SlipLimit(); }
+    /** Shear yield stress k = sigma_0 / sqrt(3) of the workpiece's initial yield stress
+        (`Material/Yield stress`); 0 for an elastic workpiece. */
+    double shear_yield_stress = 0.;
   };
 
-  /** `Friction = Coulomb`: T = mu R_n (`Friction coefficient` mu). */
-  class CoulombFriction : public FrictionLaw
-  {
-  public:
-    explicit CoulombFriction(const double mu)
-        : mu(mu)
-    {
-    }
-    std::string name() const override { return "Coulomb"; }
-    SlipLimit   slip_limit(const double, const double) const override { return {0., mu}; }
-
-  private:
-    const double mu;
-  };
-
-  /** `Friction = sticking`: no slip (mu = infinity), closed nodes stick until they open. */
-  class StickingFriction : public FrictionLaw
-  {
-  public:
-    std::string name() const override { return "sticking"; }
-    bool        switches_stick_slip() const override { return false; }
-    SlipLimit   slip_limit(const double, const double) const override;
-  };
+  /** The context of a workpiece of material @p material: k = sigma_0 / sqrt(3) of its initial
+      yield stress (forming practice), 0 for an elastic workpiece. */
+  FrictionContext friction_context(const material::MaterialParameters &material);
 
   /**
-   * `Friction = Tresca`: constant shear, tau = m k on the contact area whatever the pressure
-   * (the friction-factor law of forming practice); T = m k A. k = sigma_0 / sqrt(3) is the shear
-   * yield stress of the workpiece from its initial yield stress `Material/Yield stress` (von
-   * Mises), m the `Friction factor` (0: frictionless, 1: full sticking friction of a rigid-plastic
-   * workpiece).
+   * The parameters of one friction law: the entries of its own subsection `Contact/Die N/<Law>`
+   * (none for frictionless and sticking), registered in FrictionRegistry with
+   * AUSROLL_REGISTER_FRICTION_LAW at the end of the law's own `.cc` (contact/friction/).
    */
-  class TrescaFriction : public FrictionLaw
+  class FrictionParameters
   {
   public:
-    /** Friction factor @p m, shear yield stress @p k. */
-    TrescaFriction(const double m, const double k)
-        : shear(m * k)
+    virtual ~FrictionParameters() = default;
+
+    /** Read the law's subsection (entered by the caller; @p path its full path). */
+    virtual void parse(dealii::ParameterHandler &prm,
+                       const std::string        &path,
+                       const std::string        &input_directory)
     {
-    }
-    std::string name() const override { return "Tresca"; }
-    SlipLimit   slip_limit(const double, const double area) const override
-    {
-      return {shear * area, 0.};
+      (void)prm;
+      (void)path;
+      (void)input_directory;
     }
 
-  private:
-    const double shear; ///< m k
+    /** True if these parameters make the law frictionless (a zero coefficient or factor):
+        closed nodes then slip freely (the Frictionless law is created instead). */
+    virtual bool frictionless() const { return false; }
+
+    /** The law; InputError naming the entry under @p die_path ("Contact/Die 0/") if it cannot
+        be made with @p context. */
+    virtual std::unique_ptr<FrictionLaw> create(const FrictionContext &context,
+                                                const std::string     &die_path) const = 0;
   };
+
+  /** The registry of the friction laws (`Contact/Die N/Friction`). */
+  using FrictionRegistry = Registry<FrictionParameters>;
 
   /**
-   * `Friction = Coulomb capped by shear`: tau = min(mu p, m k), i.e. T = min(mu R_n, m k A):
-   * Coulomb at low pressure, constant shear where mu p would exceed the shear the workpiece can
-   * carry.
+   * k of @p context for a law that needs the shear yield stress; InputError naming
+   * `<die_path>Friction` if the workpiece is elastic (k = 0).
    */
-  class CappedCoulombFriction : public FrictionLaw
-  {
-  public:
-    /** Coefficient @p mu, friction factor @p m, shear yield stress @p k. */
-    CappedCoulombFriction(const double mu, const double m, const double k)
-        : mu(mu)
-        , shear(m * k)
-    {
-    }
-    std::string name() const override { return "Coulomb capped by shear"; }
-    SlipLimit   slip_limit(const double normal_force, const double area) const override
-    {
-      const double cap = shear * area;
-      return mu * normal_force <= cap ? SlipLimit{0., mu} : SlipLimit{cap, 0.};
-    }
+  double required_shear_yield_stress(const FrictionContext &context, const std::string &die_path);
 
-  private:
-    const double mu;
-    const double shear; ///< m k
-  };
-
-  /** The law selected by `Friction` with its parameters (@p parameters of one die). */
-  std::unique_ptr<FrictionLaw> create_friction_law(const DieParameters &parameters);
+  /**
+   * The law of die @p parameters (`Friction` and its subsection): Frictionless if its parameters
+   * say so, else the registered law's create(); @p die_path ("Contact/Die 0/") for messages.
+   */
+  std::unique_ptr<FrictionLaw> create_friction_law(const DieParameters   &parameters,
+                                                   const FrictionContext &context,
+                                                   const std::string     &die_path);
 } // namespace ausroll::contact
+
+/** Register the friction-law parameters @p Class (see AUSROLL_REGISTER). */
+#define AUSROLL_REGISTER_FRICTION_LAW(Class, name, subsection, description) \
+  AUSROLL_REGISTER(::ausroll::contact::FrictionParameters, Class, name, subsection, description)

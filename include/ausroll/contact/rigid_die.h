@@ -71,20 +71,23 @@ namespace ausroll::contact
 
   /**
    * A rigid die given by its surface (a RigidSurface<dim> of one of the shapes of
-   * contact/surfaces/, die coordinates: 2D shapes for dim = 2, 3D shapes (surface_factory_3d.h)
-   * for dim = 3) and its motion (DieMotion<dim>: pose as a function of pseudo-time), with the
-   * friction law of `Friction` and the workpiece boundaries (`Candidate boundaries`) that may
-   * touch it.
+   * contact/surfaces/, die coordinates: 2D shapes for dim = 2, 3D shapes for dim = 3, both
+   * registered in surface_factory.h) and its motion (DieMotion<dim>: pose as a function of
+   * pseudo-time), with the friction law of `Friction` and the workpiece boundaries (`Candidate
+   * boundaries`) that may touch it.
    */
   template <int dim>
   class RigidDie
   {
   public:
     /**
-     * Build die @p index from its parameters. Throws InputError naming the entry (also for a
-     * `Shape` of the other dimension).
+     * Build die @p index from its parameters; @p friction hands the friction law what it needs
+     * from the workpiece (the shear yield stress). Throws InputError naming the entry (also for a
+     * `Shape` of the other dimension, or a shear law on an elastic workpiece).
      */
-    RigidDie(const DieParameters &parameters, const unsigned int index);
+    RigidDie(const DieParameters   &parameters,
+             const unsigned int     index,
+             const FrictionContext &friction = FrictionContext());
 
     /** Project global point @p x onto the die in its pose at time @p t. */
     DieProjection<dim> project(const dealii::Point<dim> &x, const double t) const;

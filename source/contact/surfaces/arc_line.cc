@@ -40,3 +40,9 @@ namespace ausroll::contact::surfaces
     }
   }
 } // namespace ausroll::contact::surfaces
+
+AUSROLL_REGISTER_DIE_SHAPE(2,
+                           ausroll::contact::surfaces::ArcLineParameters,
+                           "arc line",
+                           "Arc line",
+                           "a polyline with tangent fillet arcs at its corners")

@@ -31,3 +31,9 @@ namespace ausroll::contact::surfaces
                                           DieSurface::circle(center, radius, material_inside));
   }
 } // namespace ausroll::contact::surfaces
+
+AUSROLL_REGISTER_DIE_SHAPE(2,
+                           ausroll::contact::surfaces::CircleParameters,
+                           "circle",
+                           "Circle",
+                           "a full circle (roll, round punch, or a hole)")

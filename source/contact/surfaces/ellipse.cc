@@ -252,3 +252,9 @@ namespace ausroll::contact::surfaces
     }
   }
 } // namespace ausroll::contact::surfaces
+
+AUSROLL_REGISTER_DIE_SHAPE(2,
+                           ausroll::contact::surfaces::EllipseParameters,
+                           "ellipse",
+                           "Ellipse",
+                           "a full ellipse (semi-axes, rotation angle)")

@@ -1,5 +1,7 @@
 #include <ausroll/contact/surfaces/extruded_profile.h>
+#include <ausroll/contact/surfaces/shape_entries_3d.h>
 #include <ausroll/core/exceptions.h>
+#include <ausroll/core/parse_utilities.h>
 
 #include <algorithm>
 #include <cmath>
@@ -123,4 +125,63 @@ namespace ausroll::contact::surfaces
     return {{0., chain.is_closed() ? chain.total_length() : 0.}};
   }
 
+  void ExtrudedProfileParameters::declare_parameters(ParameterHandler &prm)
+  {
+    declare_placement(prm,
+                      "Origin",
+                      "Origin of the profile coordinates (x, y, z).",
+                      "Extrusion direction (z of the profile; nonzero).",
+                      "Direction of the profile's x axis (its part normal to the Axis).");
+    prm.declare_entry("Extent",
+                      "infinite",
+                      Patterns::Selection("infinite|finite|finite with caps"),
+                      "infinite: unbounded along the axis; finite: z in [Start z, End z] with open "
+                      "ends; finite with caps: closed by flat end faces (convex edges).");
+    prm.declare_entry("Start z", "0", Patterns::Double(), "Start of the extrusion (mm).");
+    prm.declare_entry("End z", "1", Patterns::Double(), "End of the extrusion (mm), > Start z.");
+    ProfileParameters::declare_parameters(prm, "x, y");
+  }
+
+  void ExtrudedProfileParameters::parse(ParameterHandler  &prm,
+                                        const std::string &subsection_path,
+                                        const std::string &input_directory)
+  {
+    path = subsection_path;
+    parse_placement(prm, "Origin", path, origin, axis, reference);
+    const std::string e = prm.get("Extent");
+    extent = e == "infinite" ? Extent::infinite
+             : e == "finite" ? Extent::finite
+                             : Extent::finite_with_caps;
+    z0 = prm.get_double("Start z");
+    z1 = prm.get_double("End z");
+    if (extent != Extent::infinite)
+      require(z1 > z0, path + "End z", "must be larger than Start z");
+    profile.parse_parameters(prm, path, input_directory);
+  }
+
+  std::unique_ptr<const RigidSurface<3>>
+  ExtrudedProfileParameters::create(const std::string &) const
+  {
+    const DieSurface chain = profile.create();
+    const double     inf = std::numeric_limits<double>::infinity();
+    const bool       finite = extent != Extent::infinite;
+    return with_path(path,
+                     [&]() -> std::unique_ptr<const RigidSurface<3>>
+                     {
+                       return std::make_unique<ExtrudedProfile>(chain,
+                                                                finite ? z0 : -inf,
+                                                                finite ? z1 : inf,
+                                                                extent == Extent::finite_with_caps,
+                                                                origin,
+                                                                axis,
+                                                                reference);
+                     });
+  }
 } // namespace ausroll::contact::surfaces
+
+AUSROLL_REGISTER_DIE_SHAPE(
+    3,
+    ausroll::contact::surfaces::ExtrudedProfileParameters,
+    "extruded profile",
+    "Extruded profile",
+    "a 2D Profile chain (x, y) extruded along Axis (infinite, finite, or with end caps)")

@@ -1,5 +1,7 @@
 #include <ausroll/contact/surfaces/finite_cylinder.h>
+#include <ausroll/contact/surfaces/shape_entries_3d.h>
 #include <ausroll/core/exceptions.h>
+#include <ausroll/core/parse_utilities.h>
 
 #include <deal.II/base/numbers.h>
 
@@ -116,4 +118,47 @@ namespace ausroll::contact::surfaces
     return frame.to_local(Point<3>(r * std::cos(theta), r * std::sin(theta), z));
   }
 
+  void CylinderParameters::declare_parameters(ParameterHandler &prm)
+  {
+    declare_placement(prm,
+                      "Center",
+                      "Centre of the cylinder: on the axis, mid-way across the width (x, y, z).",
+                      "Direction of the cylinder axis (nonzero).",
+                      "Direction of theta = 0 for the surface coordinates (its part normal to "
+                      "the axis).");
+    prm.declare_entry("Radius", "1", Patterns::Double(0.), "Radius R (mm).");
+    prm.declare_entry("Width", "1", Patterns::Double(0.), "Width w along the axis (mm).");
+    prm.declare_entry("Edge radius",
+                      "0",
+                      Patterns::Double(0.),
+                      "Radius r_e rounding the two rim edges (mm; 0: sharp; at most "
+                      "min(Radius, Width / 2)).");
+  }
+
+  void CylinderParameters::parse(ParameterHandler  &prm,
+                                 const std::string &subsection_path,
+                                 const std::string &)
+  {
+    path = subsection_path;
+    parse_placement(prm, "Center", path, center, axis, reference);
+    radius = prm.get_double("Radius");
+    width = prm.get_double("Width");
+    edge_radius = prm.get_double("Edge radius");
+  }
+
+  std::unique_ptr<const RigidSurface<3>> CylinderParameters::create(const std::string &) const
+  {
+    return with_path(path,
+                     [&]() -> std::unique_ptr<const RigidSurface<3>> {
+                       return std::make_unique<FiniteCylinder>(
+                           center, axis, radius, width, edge_radius, reference);
+                     });
+  }
 } // namespace ausroll::contact::surfaces
+
+AUSROLL_REGISTER_DIE_SHAPE(
+    3,
+    ausroll::contact::surfaces::CylinderParameters,
+    "cylinder",
+    "Cylinder",
+    "a cylinder of finite Width with flat faces and rounded rim edges (a roll)")

@@ -31,3 +31,9 @@ namespace ausroll::contact::surfaces
     return std::make_unique<ChainSurface>("flat", DieSurface::flat(point, direction));
   }
 } // namespace ausroll::contact::surfaces
+
+AUSROLL_REGISTER_DIE_SHAPE(2,
+                           ausroll::contact::surfaces::FlatParameters,
+                           "flat",
+                           "Flat",
+                           "an infinite straight line through Point with the outward Normal")

@@ -77,3 +77,10 @@ namespace ausroll::contact::surfaces
     }
   }
 } // namespace ausroll::contact::surfaces
+
+AUSROLL_REGISTER_DIE_SHAPE(
+    2,
+    ausroll::contact::surfaces::InvoluteGearParameters,
+    "involute gear",
+    "Involute gear",
+    "an external involute spur gear (tooth flanks, root fillets, tip circle)")

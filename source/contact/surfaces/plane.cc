@@ -1,5 +1,7 @@
 #include <ausroll/contact/surfaces/plane.h>
+#include <ausroll/contact/surfaces/shape_entries_3d.h>
 #include <ausroll/core/exceptions.h>
+#include <ausroll/core/parse_utilities.h>
 
 #include <algorithm>
 #include <cmath>
@@ -76,4 +78,53 @@ namespace ausroll::contact::surfaces
                                    0.));
   }
 
+  void PlaneParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Point", "0, 0, 0", Patterns::Anything(), "A point of the plane (x, y, z).");
+    prm.declare_entry("Normal",
+                      "0, 0, 1",
+                      Patterns::Anything(),
+                      "Normal pointing out of the die, towards the workpiece (nonzero).");
+    prm.declare_entry("First tangent",
+                      "0, 0, 0",
+                      Patterns::Anything(),
+                      "Direction of the first tangent t_1 and of the first rectangle side (its "
+                      "part normal to Normal; 0, 0, 0: chosen).");
+    prm.declare_entry("Half length 1",
+                      "0",
+                      Patterns::Double(0.),
+                      "Half length of the rectangle along t_1 (mm; 0: infinite).");
+    prm.declare_entry("Half length 2",
+                      "0",
+                      Patterns::Double(0.),
+                      "Half length of the rectangle along t_2 = n x t_1 (mm; 0: infinite).");
+  }
+
+  void PlaneParameters::parse(ParameterHandler  &prm,
+                              const std::string &subsection_path,
+                              const std::string &)
+  {
+    path = subsection_path;
+    point = parse_point<3>(prm.get("Point"), path + "Point");
+    normal = get_direction(prm, "Normal", path + "Normal");
+    first_tangent = get_vector(prm, "First tangent", path + "First tangent");
+    half_length_1 = prm.get_double("Half length 1");
+    half_length_2 = prm.get_double("Half length 2");
+  }
+
+  std::unique_ptr<const RigidSurface<3>> PlaneParameters::create(const std::string &) const
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    return std::make_unique<Plane>(point,
+                                   normal,
+                                   first_tangent,
+                                   half_length_1 > 0. ? half_length_1 : inf,
+                                   half_length_2 > 0. ? half_length_2 : inf);
+  }
 } // namespace ausroll::contact::surfaces
+
+AUSROLL_REGISTER_DIE_SHAPE(3,
+                           ausroll::contact::surfaces::PlaneParameters,
+                           "plane",
+                           "Plane",
+                           "a plane through Point with the outward Normal, infinite or a rectangle")

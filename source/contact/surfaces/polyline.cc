@@ -78,3 +78,9 @@ namespace ausroll::contact::surfaces
     }
   }
 } // namespace ausroll::contact::surfaces
+
+AUSROLL_REGISTER_DIE_SHAPE(2,
+                           ausroll::contact::surfaces::PolylineParameters,
+                           "polyline",
+                           "Polyline",
+                           "straight segments through Points, the ends extended to infinity")

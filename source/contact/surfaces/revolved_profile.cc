@@ -1,5 +1,7 @@
 #include <ausroll/contact/surfaces/revolved_profile.h>
+#include <ausroll/contact/surfaces/shape_entries_3d.h>
 #include <ausroll/core/exceptions.h>
+#include <ausroll/core/parse_utilities.h>
 
 #include <cmath>
 
@@ -100,4 +102,37 @@ namespace ausroll::contact::surfaces
     return {{chain.is_closed() ? chain.total_length() : 0., 2. * numbers::PI}};
   }
 
+  void RevolvedProfileParameters::declare_parameters(ParameterHandler &prm)
+  {
+    declare_placement(prm,
+                      "Center",
+                      "Origin of the meridian coordinates (r, z) on the axis (x, y, z).",
+                      "Direction of the axis of revolution (z of the profile; nonzero).",
+                      "Direction of theta = 0 for the surface coordinates.");
+    ProfileParameters::declare_parameters(prm, "r, z");
+  }
+
+  void RevolvedProfileParameters::parse(ParameterHandler  &prm,
+                                        const std::string &subsection_path,
+                                        const std::string &input_directory)
+  {
+    path = subsection_path;
+    parse_placement(prm, "Center", path, center, axis, reference);
+    profile.parse_parameters(prm, path, input_directory);
+  }
+
+  std::unique_ptr<const RigidSurface<3>>
+  RevolvedProfileParameters::create(const std::string &) const
+  {
+    const DieSurface chain = profile.create();
+    return with_path(path,
+                     [&]() -> std::unique_ptr<const RigidSurface<3>>
+                     { return std::make_unique<RevolvedProfile>(chain, center, axis, reference); });
+  }
 } // namespace ausroll::contact::surfaces
+
+AUSROLL_REGISTER_DIE_SHAPE(3,
+                           ausroll::contact::surfaces::RevolvedProfileParameters,
+                           "revolved profile",
+                           "Revolved profile",
+                           "the surface of revolution of a 2D Profile chain (r, z) about Axis")

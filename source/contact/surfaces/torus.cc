@@ -1,5 +1,7 @@
+#include <ausroll/contact/surfaces/shape_entries_3d.h>
 #include <ausroll/contact/surfaces/torus.h>
 #include <ausroll/core/exceptions.h>
+#include <ausroll/core/parse_utilities.h>
 
 #include <deal.II/base/numbers.h>
 
@@ -62,4 +64,44 @@ namespace ausroll::contact::surfaces
     return frame.to_local(Point<3>(r * std::cos(theta), r * std::sin(theta), z));
   }
 
+  void TorusParameters::declare_parameters(ParameterHandler &prm)
+  {
+    declare_placement(prm,
+                      "Center",
+                      "Centre of the torus (x, y, z).",
+                      "Direction of the torus axis (the roll axis; nonzero).",
+                      "Direction of theta = 0 for the surface coordinates.");
+    prm.declare_entry("Major radius",
+                      "2",
+                      Patterns::Double(0.),
+                      "R: distance from the axis to the centre of the face profile circle (mm).");
+    prm.declare_entry("Minor radius",
+                      "1",
+                      Patterns::Double(0.),
+                      "rho: radius of the face profile circle (mm), 0 < rho < R.");
+  }
+
+  void TorusParameters::parse(ParameterHandler  &prm,
+                              const std::string &subsection_path,
+                              const std::string &)
+  {
+    path = subsection_path;
+    parse_placement(prm, "Center", path, center, axis, reference);
+    major_radius = prm.get_double("Major radius");
+    minor_radius = prm.get_double("Minor radius");
+  }
+
+  std::unique_ptr<const RigidSurface<3>> TorusParameters::create(const std::string &) const
+  {
+    return with_path(
+        path,
+        [&]() -> std::unique_ptr<const RigidSurface<3>>
+        { return std::make_unique<Torus>(center, axis, major_radius, minor_radius, reference); });
+  }
 } // namespace ausroll::contact::surfaces
+
+AUSROLL_REGISTER_DIE_SHAPE(3,
+                           ausroll::contact::surfaces::TorusParameters,
+                           "torus",
+                           "Torus",
+                           "a torus (a roll with a round face profile)")

@@ -116,6 +116,12 @@ _block_slide_law(capped "Coulomb capped by shear" 0.2 0.156 "active set"
 _block_slide_law(capped_coulomb "Coulomb capped by shear" 0.2 1 "active set"
   out 2 --mu 0.2 --friction-factor 1 --yield-stress 1000 --slip-nodes 17 --total-force
   -- --ratio die_punch_force_x die_punch_force_y 2 -0.2 1e-9 ${_release})
+# Levanov, tau = m k (1 - exp(-1.25 p_n / sigma_0)), m = 0.3 (k = 577.35 MPa, sigma_0 = 1000 MPa):
+# with the load-increment ratio every node slips and carries the law at its own pressure, the die
+# force is their sum. (With the active set one node ends the step sticking above its limit: open.)
+_block_slide_law(levanov Levanov 0 0.3 "load increment ratio"
+  out 2 --levanov --friction-factor 0.3 --yield-stress 1000 --slip-nodes 17 --total-force
+  -- ${_release})
 # Sticking: no node ever slips; frictionless: no tangential force, every closed node slips.
 _block_slide_law(sticking sticking 0 0 "active set"
   out 1 --slip-nodes 0 -- --value die_punch_stick_nodes 1 17 0 --value die_punch_slip_nodes 2 0 0

@@ -16,7 +16,7 @@ namespace ausroll::contact::surfaces
    * `Polyline`, ends extended to infinity) with a tangent fillet of `Fillet radii` at each
    * interior corner (one value for all, or one per corner; 0 keeps a sharp corner).
    */
-  struct ArcLineParameters : public ShapeParameters
+  struct ArcLineParameters : public ShapeParameters<2>
   {
     DiePoints           outline;      ///< `Points`, `Points file`
     std::vector<double> fillet_radii; ///< `Fillet radii` (mm)

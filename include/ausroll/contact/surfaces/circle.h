@@ -15,7 +15,7 @@ namespace ausroll::contact::surfaces
    * `Material inside` (a roll or punch) travelled clockwise with the normal outward, otherwise
    * (a hole) counter-clockwise with the normal towards the centre; s = 0 at centre + (r, 0).
    */
-  struct CircleParameters : public ShapeParameters
+  struct CircleParameters : public ShapeParameters<2>
   {
     dealii::Point<2> center{0., 0.};         ///< `Center`
     double           radius = 1.;            ///< `Radius` (mm)

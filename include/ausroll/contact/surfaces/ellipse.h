@@ -83,7 +83,7 @@ namespace ausroll::contact::surfaces
    * Subsection `Ellipse`: `Center`, `Semi-axis a` along the direction `Rotation angle`,
    * `Semi-axis b` across it, `Material inside` (see EllipseSurface).
    */
-  struct EllipseParameters : public ShapeParameters
+  struct EllipseParameters : public ShapeParameters<2>
   {
     dealii::Point<2> center{0., 0.};         ///< `Center`
     double           semi_axis_a = 1.;       ///< `Semi-axis a` (mm)

@@ -25,6 +25,8 @@
 #include <ausroll/contact/die_surface.h>
 #include <ausroll/contact/rigid_surface.h>
 #include <ausroll/contact/surfaces/frame_3d.h>
+#include <ausroll/contact/surfaces/profile_parameters.h>
+#include <ausroll/contact/surfaces/surface_factory.h>
 
 #include <limits>
 
@@ -70,5 +72,32 @@ namespace ausroll::contact::surfaces
     double     z_lo, z_hi;
     bool       with_caps;
     Frame3D    frame;
+  };
+
+  /** Subsection `Extruded profile`. */
+  struct ExtrudedProfileParameters : public ShapeParameters<3>
+  {
+    /** `Extent` along the axis. */
+    enum class Extent
+    {
+      infinite,        ///< z unbounded
+      finite,          ///< [Start z, End z], open ends
+      finite_with_caps ///< [Start z, End z] closed by flat end caps
+    };
+    dealii::Point<3>     origin;                    ///< `Origin`
+    dealii::Tensor<1, 3> axis;                      ///< `Axis` (extrusion direction)
+    dealii::Tensor<1, 3> reference;                 ///< `Reference direction` (profile x)
+    Extent               extent = Extent::infinite; ///< `Extent`
+    double               z0 = 0.;                   ///< `Start z`
+    double               z1 = 1.;                   ///< `End z`
+    ProfileParameters    profile;                   ///< subsection `Profile`, coordinates (x, y)
+    std::string          path; ///< full path of the subsection (set by parse())
+
+    /** Declare the entries of the subsection (the caller has entered it). */
+    static void                            declare_parameters(dealii::ParameterHandler &prm);
+    void                                   parse(dealii::ParameterHandler &prm,
+                                                 const std::string        &path,
+                                                 const std::string        &input_directory) override;
+    std::unique_ptr<const RigidSurface<3>> create(const std::string &path) const override;
   };
 } // namespace ausroll::contact::surfaces

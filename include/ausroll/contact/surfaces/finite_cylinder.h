@@ -22,6 +22,7 @@
 
 #include <ausroll/contact/rigid_surface.h>
 #include <ausroll/contact/surfaces/frame_3d.h>
+#include <ausroll/contact/surfaces/surface_factory.h>
 
 #include <deal.II/base/numbers.h>
 
@@ -65,5 +66,24 @@ namespace ausroll::contact::surfaces
   private:
     Frame3D frame;
     double  R, h, re; ///< radius, half width, edge radius
+  };
+
+  /** Subsection `Cylinder` (FiniteCylinder). */
+  struct CylinderParameters : public ShapeParameters<3>
+  {
+    dealii::Point<3>     center;           ///< `Center` (mid-plane of the width)
+    dealii::Tensor<1, 3> axis;             ///< `Axis`
+    dealii::Tensor<1, 3> reference;        ///< `Reference direction` (theta = 0)
+    double               radius = 1.;      ///< `Radius`
+    double               width = 1.;       ///< `Width`
+    double               edge_radius = 0.; ///< `Edge radius`
+    std::string          path;             ///< full path of the subsection (set by parse())
+
+    /** Declare the entries of the subsection (the caller has entered it). */
+    static void                            declare_parameters(dealii::ParameterHandler &prm);
+    void                                   parse(dealii::ParameterHandler &prm,
+                                                 const std::string        &path,
+                                                 const std::string        &input_directory) override;
+    std::unique_ptr<const RigidSurface<3>> create(const std::string &path) const override;
   };
 } // namespace ausroll::contact::surfaces

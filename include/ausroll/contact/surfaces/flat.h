@@ -15,7 +15,7 @@ namespace ausroll::contact::surfaces
    * (out of the die, towards the workpiece). A DieSurface::flat() chain: travelled along
    * t = n rotated by -90 degrees, s = 0 at `Point`.
    */
-  struct FlatParameters : public ShapeParameters
+  struct FlatParameters : public ShapeParameters<2>
   {
     dealii::Point<2> point{0., 0.};  ///< `Point`
     dealii::Point<2> normal{0., 1.}; ///< `Normal`

@@ -15,7 +15,7 @@ namespace ausroll::contact::surfaces
    * module, pressure angle, addendum, dedendum, tooth thickness, root fillet), tip rounds, the
    * direction of tooth 0 and an optional sector of teeth around it.
    */
-  struct InvoluteGearParameters : public ShapeParameters
+  struct InvoluteGearParameters : public ShapeParameters<2>
   {
     unsigned int teeth = 57;            ///< `Number of teeth`
     double       diametral_pitch = 8.5; ///< `Diametral pitch` (1/inch; 0: use Module)

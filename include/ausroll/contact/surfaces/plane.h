@@ -18,6 +18,7 @@
 
 #include <ausroll/contact/rigid_surface.h>
 #include <ausroll/contact/surfaces/frame_3d.h>
+#include <ausroll/contact/surfaces/surface_factory.h>
 
 #include <limits>
 
@@ -56,5 +57,23 @@ namespace ausroll::contact::surfaces
     Frame3D frame;
     /** Half lengths along t_1 and t_2. */
     double half[2];
+  };
+
+  /** Subsection `Plane`. */
+  struct PlaneParameters : public ShapeParameters<3>
+  {
+    dealii::Point<3>     point;              ///< `Point`
+    dealii::Tensor<1, 3> normal;             ///< `Normal` (outward, towards the workpiece)
+    dealii::Tensor<1, 3> first_tangent;      ///< `First tangent` (zero: chosen)
+    double               half_length_1 = 0.; ///< `Half length 1` (0: infinite)
+    double               half_length_2 = 0.; ///< `Half length 2` (0: infinite)
+    std::string          path;               ///< full path of the subsection (set by parse())
+
+    /** Declare the entries of the subsection (the caller has entered it). */
+    static void                            declare_parameters(dealii::ParameterHandler &prm);
+    void                                   parse(dealii::ParameterHandler &prm,
+                                                 const std::string        &path,
+                                                 const std::string        &input_directory) override;
+    std::unique_ptr<const RigidSurface<3>> create(const std::string &path) const override;
   };
 } // namespace ausroll::contact::surfaces

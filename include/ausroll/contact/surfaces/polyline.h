@@ -38,7 +38,7 @@ namespace ausroll::contact::surfaces
    * Subsection `Polyline`: an open DieSurface::polyline() chain through the points in travel
    * order (die material on the right), its first and last segment extended to infinity.
    */
-  struct PolylineParameters : public ShapeParameters
+  struct PolylineParameters : public ShapeParameters<2>
   {
     DiePoints outline; ///< `Points`, `Points file`
 

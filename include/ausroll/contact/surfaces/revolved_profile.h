@@ -21,6 +21,8 @@
 #include <ausroll/contact/die_surface.h>
 #include <ausroll/contact/rigid_surface.h>
 #include <ausroll/contact/surfaces/frame_3d.h>
+#include <ausroll/contact/surfaces/profile_parameters.h>
+#include <ausroll/contact/surfaces/surface_factory.h>
 
 namespace ausroll::contact::surfaces
 {
@@ -59,5 +61,22 @@ namespace ausroll::contact::surfaces
     DieSurface chain;
     Frame3D    frame;
     double     axis_tolerance; ///< a profile point with r below it lies on the axis
+  };
+
+  /** Subsection `Revolved profile`. */
+  struct RevolvedProfileParameters : public ShapeParameters<3>
+  {
+    dealii::Point<3>     center;    ///< `Center`
+    dealii::Tensor<1, 3> axis;      ///< `Axis`
+    dealii::Tensor<1, 3> reference; ///< `Reference direction` (theta = 0)
+    ProfileParameters    profile;   ///< subsection `Profile`, coordinates (r, z)
+    std::string          path;      ///< full path of the subsection (set by parse())
+
+    /** Declare the entries of the subsection (the caller has entered it). */
+    static void                            declare_parameters(dealii::ParameterHandler &prm);
+    void                                   parse(dealii::ParameterHandler &prm,
+                                                 const std::string        &path,
+                                                 const std::string        &input_directory) override;
+    std::unique_ptr<const RigidSurface<3>> create(const std::string &path) const override;
   };
 } // namespace ausroll::contact::surfaces

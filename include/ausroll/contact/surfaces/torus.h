@@ -21,6 +21,7 @@
 
 #include <ausroll/contact/rigid_surface.h>
 #include <ausroll/contact/surfaces/frame_3d.h>
+#include <ausroll/contact/surfaces/surface_factory.h>
 
 #include <deal.II/base/numbers.h>
 
@@ -62,5 +63,23 @@ namespace ausroll::contact::surfaces
   private:
     Frame3D frame;
     double  R, rho;
+  };
+
+  /** Subsection `Torus`. */
+  struct TorusParameters : public ShapeParameters<3>
+  {
+    dealii::Point<3>     center;            ///< `Center`
+    dealii::Tensor<1, 3> axis;              ///< `Axis`
+    dealii::Tensor<1, 3> reference;         ///< `Reference direction` (theta = 0)
+    double               major_radius = 2.; ///< `Major radius` R
+    double               minor_radius = 1.; ///< `Minor radius` rho (face profile radius)
+    std::string          path;              ///< full path of the subsection (set by parse())
+
+    /** Declare the entries of the subsection (the caller has entered it). */
+    static void                            declare_parameters(dealii::ParameterHandler &prm);
+    void                                   parse(dealii::ParameterHandler &prm,
+                                                 const std::string        &path,
+                                                 const std::string        &input_directory) override;
+    std::unique_ptr<const RigidSurface<3>> create(const std::string &path) const override;
   };
 } // namespace ausroll::contact::surfaces
