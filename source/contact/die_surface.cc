@@ -413,6 +413,8 @@ namespace ausroll::contact
       : segs(std::move(segments))
       , closed(closed)
       , scale(0.0)
+      , outline_begin(0.0)
+      , outline_end(0.0)
   {
     require(!segs.empty(), die_entry, "a die surface needs at least one segment");
     const std::size_t n = segs.size();
@@ -464,6 +466,27 @@ namespace ausroll::contact
     segment_s.resize(n, 0.0);
     for (std::size_t i = 0; i + 1 < n; ++i)
       segment_s[i + 1] = segment_s[i] + segs[i].u_end();
+    outline_begin = s_begin();
+    outline_end = s_end();
+  }
+
+  void DieSurface::set_outline(const Point<2> &first, const Point<2> &last)
+  {
+    outline_begin = segment_s.front() + segs.front().closest_point(first).u;
+    outline_end = segment_s.back() + segs.back().closest_point(last).u;
+  }
+
+  double
+  DieSurface::outline_margin(const double s, const bool count_start, const bool count_end) const
+  {
+    double margin = inf;
+    if (closed)
+      return margin;
+    if (count_start)
+      margin = std::min(margin, s - outline_begin);
+    if (count_end)
+      margin = std::min(margin, outline_end - s);
+    return margin;
   }
 
   DieSurface
@@ -514,7 +537,10 @@ namespace ausroll::contact
       else
         segments.push_back(DieSegment::line(a, b));
     }
-    return DieSurface(std::move(segments), closed);
+    DieSurface die(std::move(segments), closed);
+    if (extend_ends)
+      die.set_outline(p.front(), p.back());
+    return die;
   }
 
   std::vector<Point<2>> DieSurface::read_points_file(const std::string &filename)
@@ -687,7 +713,10 @@ namespace ausroll::contact
       else
         segments.push_back(DieSegment::line_through(points[n - 1], d_last, 0.0, inf));
     }
-    return DieSurface(std::move(segments), closed);
+    DieSurface die(std::move(segments), closed);
+    if (extend_ends)
+      die.set_outline(points[0], points[n - 1]);
+    return die;
   }
 
   DieSurface DieSurface::involute_flank(const Point<2> &base_center,
@@ -829,7 +858,10 @@ namespace ausroll::contact
     r.reserve(segs.size());
     for (auto it = segs.rbegin(); it != segs.rend(); ++it)
       r.push_back(it->reversed());
-    return DieSurface(std::move(r), closed);
+    DieSurface result(std::move(r), closed);
+    if (!closed && (outline_begin != s_begin() || outline_end != s_end()))
+      result.set_outline(point_at(outline_end), point_at(outline_begin));
+    return result;
   }
 
   double DieSurface::total_length() const
@@ -977,6 +1009,7 @@ namespace ausroll::contact
       result.curvature = 0.0;
     }
     result.tangent = rotate_right(result.normal);
+    result.end_margin = outline_margin(result.s);
     return result;
   }
   // ------------------------------------------------------------------ ChainSurface
@@ -1003,6 +1036,7 @@ namespace ausroll::contact
     result.coordinates[0] = p.s;
     result.at_edge = p.at_corner;
     result.at_end = p.at_end;
+    result.end_margin = p.end_margin;
     return result;
   }
 

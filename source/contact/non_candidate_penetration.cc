@@ -96,8 +96,10 @@ namespace ausroll::contact
         Point<dim> x;
         for (unsigned int c = 0; c < dim; ++c)
           x[c] = n.X[c] + u[n.dofs[c]];
+        // beyond the end of an open, finite die (or on the extension of a polyline) a negative
+        // gap is no penetration: DieProjection::depth()
         const DieProjection<dim> p = d.project(x, time);
-        if (!p.valid || -p.gap <= depth)
+        if (!p.valid || p.depth() <= depth)
           continue;
         if (t_start >= 0.)
         {
@@ -106,11 +108,11 @@ namespace ausroll::contact
           for (unsigned int c = 0; c < dim; ++c)
             x0[c] = n.X[c] + u_start[n.dofs[c]];
           const DieProjection<dim> p0 = d.project(x0, t_start);
-          if (!p0.valid || p0.gap < -tolerance)
+          if (!p0.valid || p0.depth() > tolerance)
             continue;
         }
         {
-          depth = -p.gap;
+          depth = p.depth();
           die = k;
           deepest = n;
         }

@@ -229,6 +229,7 @@ namespace ausroll::contact
     result.tangent = result.tangents[0];
     result.coordinates = p.coordinates;
     result.s = p.coordinates[0];
+    result.end_margin = p.at_end ? 0. : p.end_margin;
     return result;
   }
 

@@ -11,7 +11,7 @@
 #include <ausroll/contact/rigid_die.h>
 #include <ausroll/core/exceptions.h>
 
-#include <deal.II/base/parameter_handler.h>
+#include "contact_test_utilities.h"
 
 #include <gtest/gtest.h>
 
@@ -20,21 +20,10 @@
 
 using namespace dealii;
 using namespace ausroll;
+using ausroll::testing::parse_die;
 
 namespace
 {
-  /** Die 0 of the `Contact` text @p die (the inside of `subsection Die 0`). */
-  contact::DieParameters parse_die(const std::string &die)
-  {
-    ParameterHandler prm;
-    contact::ContactParameters::declare_parameters(prm);
-    prm.parse_input_from_string("subsection Contact\nset Number of dies = 1\nsubsection Die 0\n"
-                                + die + "end\nend\n");
-    contact::ContactParameters p;
-    p.parse_parameters(prm, "");
-    return p.dies[0];
-  }
-
   Tensor<1, 3> unit(const Tensor<1, 3> &v)
   {
     return v / v.norm();

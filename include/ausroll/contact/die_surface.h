@@ -236,6 +236,12 @@ namespace ausroll::contact
     bool at_corner = false;
     /** True if x_proj is the start or end point of an open chain. */
     bool at_end = false;
+    /**
+     * Arc length from x_proj to the nearer end of the die's outline (DieSurface::outline_margin()):
+     * > 0 on the outline, 0 at its end, < 0 on an extension of an open chain beyond the given
+     * points; +infinity on a closed chain or an unbounded one without given ends (a flat die).
+     */
+    double end_margin = std::numeric_limits<double>::infinity();
   };
 
   /**
@@ -250,8 +256,15 @@ namespace ausroll::contact
    * Projection::at_end so that a contact algorithm can release such points.
    *
    * Note: for an open chain "penetration" simply means "on the material side of the nearest
-   * segment"; points far behind a short die would be reported as penetrating. Use the search
-   * distance of project() to restrict the search to a band around the surface.
+   * segment"; points far behind a short die, or beside an end on its material side, have a
+   * negative gap. Use the search distance of project() to restrict the search to a band around
+   * the surface, and Projection::end_margin to tell whether a point lies behind the die's outline
+   * at all (a point whose projection is an end or lies on an extension is beyond the die).
+   *
+   * The outline of an open chain is the part between the points it was built from: the whole
+   * chain, or, for a polyline or line-arc composite with extended ends, the chain without the two
+   * rays to infinity (those keep the contact of a node that slides over an end smooth, but are no
+   * part of the die's body). A flat die built infinite has no ends.
    */
   class DieSurface
   {
@@ -379,6 +392,17 @@ namespace ausroll::contact
     /** Whether the chain is closed. */
     bool is_closed() const { return closed; }
 
+    /**
+     * Arc length from curvilinear coordinate @p s to the nearer end of the outline (see the class
+     * documentation): > 0 within it, < 0 beyond it; +infinity on a closed chain and towards an end
+     * at infinity. @p count_start / @p count_end = false ignore that end (an end that is no edge
+     * of the die's body, e.g. a profile end on the axis of revolution).
+     */
+    double outline_margin(double s, bool count_start = true, bool count_end = true) const;
+
+    /** Curvilinear coordinates of the start and the end of the outline (+-infinity at infinity). */
+    std::pair<double, double> outline() const { return {outline_begin, outline_end}; }
+
     /** Number of segments. */
     unsigned int n_segments() const { return static_cast<unsigned int>(segs.size()); }
 
@@ -392,6 +416,10 @@ namespace ausroll::contact
     /** Index of the segment holding curvilinear coordinate @p s and the local coordinate. */
     std::pair<unsigned int, double> locate(double s) const;
 
+    /** Make the outline run from the point @p first on the first segment to @p last on the last
+        one (an open chain whose end segments extend beyond the points it was built from). */
+    void set_outline(const dealii::Point<2> &first, const dealii::Point<2> &last);
+
     /** The segments in order of travel. */
     std::vector<DieSegment> segs;
     /** segment_s[i]: curvilinear coordinate of the point u = 0 of segment i. */
@@ -400,6 +428,9 @@ namespace ausroll::contact
     bool closed;
     /** Length scale of the die (bounding box size) used for tolerances. */
     double scale;
+    /** Curvilinear coordinates of the ends of the outline (s_begin(), s_end() unless set_outline()
+        was called). */
+    double outline_begin, outline_end;
   };
   /**
    * A DieSurface chain seen as a RigidSurface<2> (the interface the contact code uses): the

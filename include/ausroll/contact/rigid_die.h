@@ -10,6 +10,7 @@
 #include <ausroll/contact/friction_law.h>
 #include <ausroll/contact/rigid_surface.h>
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <memory>
@@ -34,6 +35,12 @@ namespace ausroll::contact
     std::array<double, dim - 1>                 coordinates{}; ///< surface coordinates (die frame)
     double             s = 0.;      ///< coordinates[0] (2D: arc length on the die)
     dealii::Point<dim> local_point; ///< closest die point in die coordinates
+    /** SurfaceProjection::end_margin (0 at an open end, at_end): how far the closest point lies
+        within the rim of the die's body; +infinity on closed and unbounded dies. */
+    double end_margin = std::numeric_limits<double>::infinity();
+    /** How deep the point lies inside the die's body: min(-gap, end_margin), so not inside (<= 0)
+        where it lies beyond the end of an open, finite die, whatever the sign of the gap. */
+    double depth() const { return std::min(-gap, end_margin); }
   };
 
   /**

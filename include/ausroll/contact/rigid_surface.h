@@ -62,6 +62,15 @@ namespace ausroll::contact
     /** True if x_proj lies on the boundary of an open (finite) surface: a contact algorithm may
         release such points. */
     bool at_end = false;
+    /**
+     * Distance along the surface from x_proj to the nearest rim of the die's body (the border of
+     * an open, finite surface as given, without any extension to infinity that keeps the contact
+     * smooth): > 0 within, <= 0 at or beyond the rim; +infinity for a closed surface, an unbounded
+     * one (flat, infinite plane, cylinder) and shapes that do not say (RigidDie::project() takes 0
+     * where at_end is set). A point with a negative gap lies behind the die's body only if this is
+     * positive: beyond a rim the sign of the gap says nothing about being inside the die.
+     */
+    double end_margin = std::numeric_limits<double>::infinity();
   };
 
   /**

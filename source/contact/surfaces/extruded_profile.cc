@@ -51,6 +51,8 @@ namespace ausroll::contact::surfaces
     SurfaceProjection<3> p;
     p.coordinates = {{zc, q.s}};
     p.curvatures = {{0., 0.}};
+    // the rims: the ends of the profile's outline and, without caps, the ends of the extrusion
+    p.end_margin = with_caps ? q.end_margin : std::min({q.end_margin, z - z_lo, z_hi - z});
     auto on_mantle = [&]()
     {
       p.point = Point<3>(q.point[0], q.point[1], z);

@@ -94,6 +94,7 @@ namespace ausroll::contact::surfaces
     const bool on_axis = std::abs(m.point[0]) <= axis_tolerance;
     p.at_edge = m.at_edge || m.at_end;
     p.at_end = m.at_end;
+    p.end_margin = m.end_margin;
     if (p.at_edge || p.at_end)
       p.curvatures = {{0., 0.}};
     else

@@ -40,6 +40,8 @@ namespace ausroll::contact::surfaces
     if (c0 == xi[0] && c1 == xi[1])
     {
       p.gap = xi[2];
+      // distance to the nearer edge of a finite rectangle (+infinity for an infinite plane)
+      p.end_margin = std::min(half[0] - std::abs(xi[0]), half[1] - std::abs(xi[1]));
       p.normal = n;
     }
     else

@@ -40,6 +40,10 @@ namespace ausroll::contact::surfaces
                        std::abs(seg.bounding_box_max()[1])});
     }
     axis_tolerance = 1e-10 * std::max(size, 1e-300);
+    const auto rim = [&](const double s)
+    { return std::isfinite(s) && std::abs(chain.point_at(s)[0]) > axis_tolerance; };
+    rim_at_start = rim(chain.outline().first);
+    rim_at_end = rim(chain.outline().second);
     for (unsigned int i = 0; i < chain.n_segments(); ++i)
       if (chain.segment(i).is_bounded() && chain.segment(i).bounding_box_min()[0] < -axis_tolerance)
       {
@@ -68,6 +72,8 @@ namespace ausroll::contact::surfaces
     m.s = q.s;
     m.at_edge = q.at_corner;
     m.at_end = q.at_end;
+    // an end of the profile on the axis is no rim of the surface
+    m.end_margin = chain.outline_margin(q.s, rim_at_start, rim_at_end);
     if (q.at_end && std::abs(q.point[0]) <= axis_tolerance)
     {
       // an end on the axis: a smooth point if the profile meets the axis at a right angle (a face

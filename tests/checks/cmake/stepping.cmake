@@ -47,6 +47,12 @@ ausroll_add_script_check(NAME hard_cases SCRIPT ${AUSROLL_CHECKS_DIR}/check_hard
 # at 20 % is within 0.5 % of the shipped candidates' (measured 0.09 %); with warn it warns once.
 # About 45 s of CPU.
 ausroll_add_script_check(NAME penetrating_boundaries_3d SCRIPT ${AUSROLL_CHECKS_DIR}/check_penetrating_boundaries_3d.py)
+# Head forming as shipped (prm/head_forming.prm) with Penetrating boundaries = add (the default)
+# and = warn: no boundary passes through a die (the bore and the shoulder are polylines extended
+# to infinity for the contact; a node beyond a die's end is not inside it), punch force at
+# 10-40 % within 1 % and shoulder force at 40 % within 2 % of doc/scenes/head_forming.md, first
+# shoulder contact within one step of it; reasons in the script. About 4 s of CPU.
+ausroll_add_script_check(NAME head_forming SCRIPT ${AUSROLL_CHECKS_DIR}/check_head_forming.py)
 
 # The elliptic die (contact/surfaces/ellipse) in a whole scene: disk_rolling_short with the roll
 # as an ellipse a = b = R equals the circle die to 1e-10 (measured 3.8e-13); an oval roll

@@ -85,6 +85,8 @@ namespace ausroll::contact::surfaces
     double               s = 0.;          ///< arc length along the profile
     bool                 at_edge = false; ///< corner of the profile (an edge circle in 3D)
     bool                 at_end = false;  ///< open end of the profile (a rim of the surface)
+    /** Arc length to the nearer rim along the profile (SurfaceProjection::end_margin). */
+    double end_margin = std::numeric_limits<double>::infinity();
   };
 
   /**

@@ -61,6 +61,9 @@ namespace ausroll::contact::surfaces
     DieSurface chain;
     Frame3D    frame;
     double     axis_tolerance; ///< a profile point with r below it lies on the axis
+    /** Whether the start / the end of the profile's outline is a rim of the surface (not on the
+        axis, not at infinity). */
+    bool rim_at_start = false, rim_at_end = false;
   };
 
   /** Subsection `Revolved profile`. */
