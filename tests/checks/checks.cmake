@@ -370,6 +370,31 @@ function(ausroll_add_script_check)
   set_tests_properties(check/${C_NAME} PROPERTIES LABELS check TIMEOUT 900)
 endfunction()
 
+# Damaged checkpoints (emptied, truncated, bit-flipped or missing p4est and data files, edited or
+# emptied metadata), an edited history.csv and resumes that change Candidate boundaries or add a
+# monitor point: each ends with exit 2 and a message naming the file or entry (before: p4est
+# abort, segfault, NaN later, a corrupted history.csv); an undamaged copy resumes. About 15 s.
+ausroll_add_script_check(NAME damaged_restarts SCRIPT ${AUSROLL_CHECKS_DIR}/check_damaged_restarts.py)
+
+# `--check-input` on a 2D and a 3D shipped scene: exit 0, the sizes printed, nothing written; a
+# refused entry: exit 2, nothing written. A few seconds.
+ausroll_add_script_check(NAME check_input_mode SCRIPT ${AUSROLL_CHECKS_DIR}/check_input_mode.py)
+
+# Abaqus mesh import (Geometry/Mesh file = block_5x2.inp, surfaces SS1..SS3 as boundary ids): the
+# pressed block agrees with the same mesh built internally (1e-9) and the analytic die force
+# (1e-6). A few seconds.
+ausroll_add_script_check(NAME abaqus_mesh SCRIPT ${AUSROLL_CHECKS_DIR}/check_abaqus_mesh.py)
+
+# An error that only rank 0 finds (a directory named history.csv in the output directory) ends
+# both ranks within seconds with exit 2 and the message (before: rank 1 waited forever).
+set(_dir ${CMAKE_CURRENT_BINARY_DIR}/rank_error_np2)
+file(MAKE_DIRECTORY ${_dir})
+add_test(NAME check/rank_error_np2
+  COMMAND ${Python3_EXECUTABLE} ${AUSROLL_CHECKS_DIR}/check_rank_error.py $<TARGET_FILE:ausroll>
+          ${CMAKE_SOURCE_DIR} ${DEAL_II_MPIEXEC}
+  WORKING_DIRECTORY ${_dir})
+set_tests_properties(check/rank_error_np2 PROPERTIES LABELS check TIMEOUT 120 PROCESSORS 2)
+
 # 3D against 2D: a block extruded along z with u_z = 0 on both z faces, pressed by a frictionless
 # cylinder, reproduces the plane-strain 2D scene with a circle die (same x-y mesh): histories
 # within 1e-8 (the discrete problems are the same; measured equal to 10 digits). A few seconds.
