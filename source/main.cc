@@ -13,9 +13,11 @@
 #include <deal.II/base/multithread_info.h>
 
 #include <algorithm>
+#include <chrono>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace
@@ -33,6 +35,9 @@ namespace
            "       ausroll --version             version\n"
            "Options after FILE.prm:\n"
            "  --resume                 continue FILE.prm from its latest checkpoint\n"
+           "  --check-input            parse FILE.prm, build the mesh and the dies, run the\n"
+           "                           set-up checks, print the sizes (cells, DoFs, estimated\n"
+           "                           memory) and exit 0 (or 2) without writing\n"
            "  --overwrite              replace the results of an earlier run in Output/Directory\n"
            "                           (same as --set \"Output/Overwrite=true\")\n"
            "  --set \"Section/Entry=value\"\n"
@@ -80,6 +85,7 @@ namespace
   {
     std::string                             file;
     bool                                    resume = false;
+    bool                                    check_only = false;
     std::vector<ausroll::ParameterOverride> overrides;
   };
 
@@ -92,6 +98,8 @@ namespace
       const std::string arg = argv[i];
       if (arg == "--resume")
         line.resume = true;
+      else if (arg == "--check-input")
+        line.check_only = true;
       else if (arg == "--overwrite")
         line.overrides.push_back(ausroll::parse_override("Output/Overwrite=true"));
       else if (arg == "--set")
@@ -107,6 +115,56 @@ namespace
     }
     return line;
   }
+  /**
+   * End the process after an error caught on this rank, printed as @p message (with the usage
+   * after a usage error). Alone, or when every rank caught an error (an input error all ranks
+   * find while reading the same file), rank 0 prints it and each rank returns @p status. An
+   * error found on this rank only (e.g. rank 0 cannot write `history.csv`) would leave the other
+   * ranks waiting in their next collective call forever: after @ref agreement_wait without the
+   * others joining, this rank prints the message and ends every rank with MPI_Abort(@p status).
+   * @p error_comm is a duplicate of MPI_COMM_WORLD used for nothing else, so that the agreement
+   * never matches a collective call of the computation.
+   */
+  int end_after_error(const MPI_Comm     error_comm,
+                      const int          status,
+                      const std::string &message,
+                      const bool         usage)
+  {
+    constexpr std::chrono::seconds agreement_wait(10);
+    const unsigned int             rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const auto                     print = [&](const std::string &prefix)
+    {
+      std::cerr << prefix << message << std::endl;
+      if (usage)
+        print_usage(std::cerr);
+    };
+    if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1)
+    {
+      print("");
+      return status;
+    }
+    MPI_Request request;
+    MPI_Ibarrier(error_comm, &request);
+    int        joined = 0;
+    const auto start = std::chrono::steady_clock::now();
+    while (!joined && std::chrono::steady_clock::now() - start < agreement_wait)
+    {
+      MPI_Test(&request, &joined, MPI_STATUS_IGNORE);
+      if (!joined)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    if (joined)
+    {
+      if (rank == 0)
+        print("");
+      return status;
+    }
+    print("");
+    std::cerr << "ausroll: the error was found on rank " << rank
+              << " only; ending all ranks (exit status " << status << ")" << std::endl;
+    MPI_Abort(MPI_COMM_WORLD, status);
+    return status;
+  }
 } // namespace
 
 int main(int argc, char **argv)
@@ -119,10 +177,15 @@ int main(int argc, char **argv)
       std::max(1u,
                dealii::MultithreadInfo::n_cores()
                    / dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)));
+  // Only for end_after_error(): ranks agree on an error without touching MPI_COMM_WORLD.
+  MPI_Comm error_comm;
+  MPI_Comm_dup(MPI_COMM_WORLD, &error_comm);
 
   // Keep deal.II from printing long developer messages; errors are reported below.
   dealii::deal_II_exceptions::disable_abort_on_exception();
 
+  int         status = 0;
+  std::string message;
   try
   {
     if (argc < 2)
@@ -169,33 +232,33 @@ int main(int argc, char **argv)
     if (arg.rfind("-", 0) == 0)
       throw ausroll::UsageError("unknown option '" + arg + "'");
     const CommandLine line = parse_command_line(argc, argv);
-    ausroll::scene::run_scene(line.file, MPI_COMM_WORLD, line.resume, line.overrides);
+    if (line.check_only && line.resume)
+      throw ausroll::UsageError("--check-input checks a new run; it cannot be combined with "
+                                "--resume");
+    ausroll::scene::run_scene(
+        line.file, MPI_COMM_WORLD, line.resume, line.overrides, line.check_only);
   }
   catch (const ausroll::UsageError &e)
   {
-    if (root)
-    {
-      std::cerr << "ausroll: " << e.what() << "\n";
-      print_usage(std::cerr);
-    }
-    return 1;
+    status = 1;
+    message = std::string("ausroll: ") + e.what();
   }
   catch (const ausroll::InputError &e)
   {
-    if (root)
-      std::cerr << "ausroll: input error: " << concise(e.what()) << std::endl;
-    return 2;
+    status = 2;
+    message = "ausroll: input error: " + concise(e.what());
   }
   catch (const ausroll::RunFailure &e)
   {
-    if (root)
-      std::cerr << "ausroll: run failed: " << concise(e.what()) << std::endl;
-    return 3;
+    status = 3;
+    message = "ausroll: run failed: " + concise(e.what());
   }
   catch (const std::exception &e)
   {
-    std::cerr << "ausroll: internal error: " << concise(e.what()) << std::endl;
-    return 4;
+    status = 4;
+    message = "ausroll: internal error: " + concise(e.what());
   }
+  if (status != 0)
+    return end_after_error(error_comm, status, message, status == 1);
   return 0;
 }

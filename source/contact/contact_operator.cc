@@ -58,6 +58,7 @@ namespace ausroll::contact
     nodes.clear();
     transforms.clear();
     gap_tolerance = 1e-9 * length_scale;
+    smallest_cell = length_scale;
     slip_length = 1e-2 * length_scale;
     // 2D: a reversal of the arc length beyond the gap tolerance (as before); 3D: beyond 1e-5 of
     // the length scale, so that the direction noise of a slip much shorter than slip_length (the
@@ -1117,6 +1118,18 @@ namespace ausroll::contact
         std::ostringstream msg;
         msg << path << ": the undeformed workpiece starts " << -global_deepest
             << " mm inside the die; check its Normal / Material inside / position and Motion";
+        throw InputError(msg.str());
+      }
+      // A shallower overlap is no flipped normal, but the first step would have to push the
+      // nodes out by more than a tenth of a cell at once: Newton fails and blames convergence.
+      if (global_deepest < -0.1 * smallest_cell)
+      {
+        std::ostringstream msg;
+        msg << path << ": the undeformed workpiece starts " << -global_deepest
+            << " mm inside the die at t = " << times.front()
+            << " (more than a tenth of the smallest cell, " << smallest_cell
+            << " mm; the first step cannot push it out); move the die back by that much in its "
+               "position or Motion, or start with a gap";
         throw InputError(msg.str());
       }
       if (Utilities::MPI::min(nearest, comm) > 0.25 * workpiece_size)

@@ -209,9 +209,12 @@ namespace ausroll::contact
       prm.enter_subsection("Die " + std::to_string(k));
       DieParameters d;
       d.name = prm.get("Name");
-      require(!d.name.empty() && d.name.find_first_of(" ,;") == std::string::npos,
-              path + "Name",
-              "must be a single word");
+      require_label(d.name, path + "Name");
+      for (unsigned int j = 0; j < dies.size(); ++j)
+        require(dies[j].name != d.name,
+                path + "Name",
+                "'" + d.name + "' is also the name of Contact/Die " + std::to_string(j)
+                    + "; each die needs a name of its own (it names history.csv columns)");
       d.shape = prm.get("Shape");
       if (is_3d_shape(d.shape))
       {

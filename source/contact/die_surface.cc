@@ -4,6 +4,7 @@
  */
 #include <ausroll/contact/die_surface.h>
 #include <ausroll/core/exceptions.h>
+#include <ausroll/core/input_file.h>
 #include <ausroll/geometry/involute_gear.h>
 
 #include <algorithm>
@@ -546,9 +547,8 @@ namespace ausroll::contact
   std::vector<Point<2>> DieSurface::read_points_file(const std::string &filename)
   {
     const std::string where = "Die surface points file '" + filename + "'";
-    std::ifstream     in(filename);
-    if (!in)
-      throw InputError(where + ": cannot open the file for reading");
+    std::ifstream in
+        = open_input_file(filename, "Die surface points file", file_size_limit::points_file);
     std::vector<Point<2>> points;
     std::string           line;
     unsigned int          line_number = 0;

@@ -1,4 +1,5 @@
 #include <ausroll/core/exceptions.h>
+#include <ausroll/core/input_file.h>
 #include <ausroll/core/parameter_file.h>
 #include <ausroll/core/parse_utilities.h>
 
@@ -36,15 +37,20 @@ namespace ausroll
       return text;
     }
 
-    /** Refuse @p path unless it is a readable regular file; @p where prefixes the message. */
+    /**
+     * Refuse @p path unless it is a readable regular file of at most
+     * file_size_limit::parameter_file bytes (a FIFO would block, /dev/zero would fill the
+     * memory); @p where prefixes the message.
+     */
     void require_regular_file(const fs::path &path, const std::string &where)
     {
-      std::error_code ec;
-      if (!fs::exists(path, ec))
-        throw InputError(where + "cannot open parameter file '" + path.string()
-                         + "' (no such file)");
-      if (fs::is_directory(path, ec))
+      const std::string problem
+          = input_file_problem(path.string(), file_size_limit::parameter_file);
+      if (problem.rfind("is a directory", 0) == 0)
         throw InputError(where + "'" + path.string() + "' is a directory, not a parameter file");
+      if (!problem.empty())
+        throw InputError(where + "cannot open parameter file '" + path.string() + "' (" + problem
+                         + ")");
     }
 
     void expand(const fs::path           &path,
@@ -53,9 +59,8 @@ namespace ausroll
                 std::vector<std::string> &canonical_chain,
                 ParameterText            &out)
     {
-      std::ifstream in(path);
-      if (!in)
-        throw InputError("cannot open parameter file '" + name + "'");
+      std::ifstream in
+          = open_input_file(path.string(), "parameter file", file_size_limit::parameter_file);
       const std::regex include_line(R"(^\s*include\s+(\S(.*\S)?)\s*$)");
       std::string      line;
       std::smatch      match;
@@ -71,9 +76,12 @@ namespace ausroll
         const std::string where = name + ":" + std::to_string(number) + ": ";
         if (std::regex_match(line, match, include_line))
         {
-          const fs::path target(match[1].str());
-          fs::path       resolved = target;
-          if (target.is_relative() && fs::exists(path.parent_path() / target))
+          const fs::path  target(match[1].str());
+          fs::path        resolved = target;
+          std::error_code ec;
+          if (target.is_relative()
+              && fs::symlink_status(path.parent_path() / target, ec).type()
+                     != fs::file_type::not_found)
             resolved = path.parent_path() / target;
           require_regular_file(resolved, where + "include: ");
           const std::string canonical = fs::weakly_canonical(resolved).string();
@@ -199,6 +207,20 @@ namespace ausroll
     const auto equal = argument.find('=');
     if (equal == std::string::npos)
       throw UsageError("--set '" + argument + "': expected \"Section/Entry=value\"");
+    // One override is one line of the file: a line break would start other entries (or
+    // subsections) that the command line does not show.
+    for (const char c : argument)
+      if (c == '\n' || c == '\r' || c == '\0' || c == '\v' || c == '\f')
+      {
+        std::string shown;
+        for (const char d : argument)
+          shown += d == '\n'   ? std::string("\\n")
+                   : d == '\r' ? std::string("\\r")
+                               : std::string(1, d);
+        throw UsageError("--set '" + abbreviate(shown)
+                         + "': contains a line break or another control character; one --set "
+                           "sets one entry (repeat --set for more)");
+      }
     ParameterOverride o;
     o.argument = argument;
     o.value = trim(argument.substr(equal + 1));

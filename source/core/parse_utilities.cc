@@ -1,6 +1,8 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/core/parse_utilities.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -72,6 +74,31 @@ namespace ausroll
     return values;
   }
 
+  void require_label(const std::string &name, const std::string &entry)
+  {
+    const bool allowed = !name.empty() && name.size() <= 64 && name != "." && name != ".."
+                         && std::all_of(name.begin(),
+                                        name.end(),
+                                        [](const char c) {
+                                          return std::isalnum(static_cast<unsigned char>(c))
+                                                 || c == '_' || c == '-' || c == '.';
+                                        });
+    if (!allowed)
+      throw InputError(entry + ": '" + abbreviate(name)
+                       + "' must be a single word of at most 64 letters, digits, '_', '-' or '.' "
+                         "(not '.' or '..'): it names history.csv columns and output files");
+  }
+
+  void require_unique_labels(const std::vector<std::string> &names, const std::string &entry)
+  {
+    for (std::size_t i = 0; i < names.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (names[i] == names[j])
+          throw InputError(entry + ": the name '" + names[i]
+                           + "' is used twice; each needs a name of its own (it names "
+                             "history.csv columns and output files)");
+  }
+
   template <int dim>
   dealii::Point<dim> parse_point(const std::string &text, const std::string &entry)
   {
@@ -95,9 +122,16 @@ namespace ausroll
       const auto colon = item.find(':');
       if (colon == std::string::npos || colon == 0)
         throw InputError(entry + ": '" + item + "' must read 'name: x, y'");
-      std::string name = split_and_trim(item.substr(0, colon), ' ').front();
+      // the whole text before the colon, trimmed ("a b" is refused, not cut to "a")
+      const std::vector<std::string> before = split_and_trim(item.substr(0, colon), '\n');
+      const std::string              name = before.empty() ? std::string() : before.front();
+      require_label(name, entry);
       points.emplace_back(name, parse_point<dim>(item.substr(colon + 1), entry));
     }
+    std::vector<std::string> names;
+    for (const auto &p : points)
+      names.push_back(p.first);
+    require_unique_labels(names, entry);
     return points;
   }
 

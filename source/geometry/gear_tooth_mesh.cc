@@ -211,7 +211,12 @@ namespace ausroll::geometry
     require(
         diametral_pitch > 0. || module > 0., section + "Module", "set Diametral pitch or Module");
     require(pressure_angle > 0., section + "Pressure angle", "must be positive");
-    require(teeth <= n_teeth, section + "Teeth", "must not exceed Number of teeth");
+    require(teeth < max_sector_teeth(),
+            section + "Teeth",
+            std::to_string(teeth) + " is outside the allowed range 1 to "
+                + std::to_string(max_sector_teeth() - 1)
+                + ": the mesh is a sector of the gear (Number of teeth = " + std::to_string(n_teeth)
+                + ") with cut edges as boundaries 2 and 3, at most half the gear");
     ToothProportions p;
     if (addendum >= 0.)
       p.addendum = addendum;

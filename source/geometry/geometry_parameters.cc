@@ -70,7 +70,10 @@ namespace ausroll::geometry
         "Mesh file",
         "",
         Patterns::Anything(),
-        "Mesh for Type = mesh file (Gmsh .msh or UCD .inp), relative to the .prm file.");
+        "Mesh for Type = mesh file, relative to the .prm file: Gmsh .msh (physical tags as "
+        "boundary ids), Abaqus .inp (surfaces as boundary ids, element sets as material ids: the "
+        "number in the name, e.g. *Surface, name=SS2 is boundary 2; see the manual) or UCD "
+        ".ucd.");
 
     prm.declare_entry("Refinement point",
                       "0, 0",

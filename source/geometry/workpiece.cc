@@ -1,7 +1,10 @@
 #include <ausroll/core/exceptions.h>
+#include <ausroll/core/input_file.h>
+#include <ausroll/core/parameter_file.h>
 #include <ausroll/geometry/gear_tooth_mesh.h>
 #include <ausroll/geometry/workpiece.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/numbers.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
@@ -113,9 +116,9 @@ namespace ausroll::geometry
     template <int dim>
     void mesh_file(const GeometryParameters &p, Triangulation<dim> &coarse)
     {
-      std::ifstream in(p.mesh_file);
-      if (!in)
-        throw InputError("Geometry/Mesh file: cannot open '" + p.mesh_file + "'");
+      // InputError "Geometry/Mesh file: cannot open '<file>': <why>" (FIFO, device, too large, ...)
+      std::ifstream in = open_input_file(
+          p.mesh_file, "Geometry/Mesh file: cannot open", file_size_limit::mesh_file);
       GridIn<dim> grid_in(coarse);
       try
       {
@@ -123,14 +126,21 @@ namespace ausroll::geometry
         if (ext == "msh")
           grid_in.read_msh(in);
         else if (ext == "inp")
+          grid_in.read_abaqus(in);
+        else if (ext == "ucd")
           grid_in.read_ucd(in);
         else
           throw InputError("Geometry/Mesh file: '" + p.mesh_file
-                           + "' must end in .msh (Gmsh) or .inp (UCD)");
+                           + "' must end in .msh (Gmsh), .inp (Abaqus) or .ucd (UCD)");
       }
       catch (const ExceptionBase &e)
       {
-        throw InputError("Geometry/Mesh file: cannot read '" + p.mesh_file + "'");
+        const std::string format
+            = p.mesh_file.size() > 4 && p.mesh_file.compare(p.mesh_file.size() - 4, 4, ".inp") == 0
+                  ? " as an Abaqus input file"
+                  : "";
+        throw InputError("Geometry/Mesh file: cannot read '" + p.mesh_file + "'" + format + ": "
+                         + user_message(e));
       }
     }
 
@@ -297,19 +307,37 @@ namespace ausroll::geometry
       for (unsigned int level = 0; level < p.local_refinements;
            ++level, radius *= p.refinement_radius_factor)
       {
+        double flagged = 0.;
         for (const auto &cell : tria.active_cell_iterators())
           if (cell->is_locally_owned()
               && cell->center().distance(target) < radius + 0.5 * cell->diameter())
+          {
             cell->set_refine_flag();
+            ++flagged;
+          }
+        // the cells after this level, counted before they are made
+        const double after
+            = tria.n_global_active_cells()
+              + Utilities::MPI::sum(flagged, tria.get_communicator()) * ((1u << dim) - 1);
+        if (after > max_cells)
+        {
+          std::ostringstream msg;
+          msg << "Geometry/Local refinements: level " << level + 1 << " of " << p.local_refinements
+              << " would give " << after << " cells, more than ausroll accepts (" << max_cells
+              << "); use fewer Local refinements, a smaller Refinement radius or a smaller "
+                 "Refinement radius factor";
+          throw InputError(msg.str());
+        }
         tria.execute_coarsening_and_refinement();
       }
     }
   } // namespace
 
   template <int dim>
-  void create_workpiece(const GeometryParameters &parameters,
-                        Triangulation<dim>       &triangulation,
-                        const bool                refine)
+  void create_workpiece(const GeometryParameters                  &parameters,
+                        Triangulation<dim>                        &triangulation,
+                        const bool                                 refine,
+                        const std::function<void(double n_cells)> &check_cells)
   {
     // Coarse cells from the entries, bounded before anything is allocated.
     {
@@ -438,6 +466,8 @@ namespace ausroll::geometry
     }
     if (!refine)
       return;
+    if (check_cells)
+      check_cells(estimate);
     triangulation.refine_global(parameters.global_refinements);
     refine_towards_point(parameters, triangulation);
   }
@@ -496,6 +526,12 @@ namespace ausroll::geometry
                                         const std::string &);
   template void require_off_axis<2>(const Triangulation<2> &, const std::string &);
   template void require_off_axis<3>(const Triangulation<3> &, const std::string &);
-  template void create_workpiece<2>(const GeometryParameters &, Triangulation<2> &, const bool);
-  template void create_workpiece<3>(const GeometryParameters &, Triangulation<3> &, const bool);
+  template void create_workpiece<2>(const GeometryParameters &,
+                                    Triangulation<2> &,
+                                    const bool,
+                                    const std::function<void(double)> &);
+  template void create_workpiece<3>(const GeometryParameters &,
+                                    Triangulation<3> &,
+                                    const bool,
+                                    const std::function<void(double)> &);
 } // namespace ausroll::geometry

@@ -1,12 +1,17 @@
 #include <ausroll/core/exceptions.h>
+#include <ausroll/core/input_file.h>
+#include <ausroll/core/parse_utilities.h>
 #include <ausroll/io/checkpoint.h>
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace ausroll::io
@@ -49,62 +54,190 @@ namespace ausroll::io
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    /** FNV-1a (64 bit) of @p bytes, continuing from @p hash. */
+    std::uint64_t fnv1a(const char *bytes, const std::size_t n, std::uint64_t hash)
+    {
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        hash ^= static_cast<unsigned char>(bytes[i]);
+        hash *= 0x100000001b3ULL;
+      }
+      return hash;
+    }
+
+    constexpr std::uint64_t fnv1a_basis = 0xcbf29ce484222325ULL;
+
+    std::string hex(const std::uint64_t x)
+    {
+      std::ostringstream out;
+      out << std::hex << std::setw(16) << std::setfill('0') << x;
+      return out.str();
+    }
+
+    /** Size and FNV-1a 64 of the file @p path (InputError naming it if it cannot be read). */
+    std::pair<std::uintmax_t, std::string> size_and_checksum(const std::string &path)
+    {
+      std::ifstream in = open_input_file(
+          path, "checkpoint file", std::numeric_limits<std::uintmax_t>::max(), true);
+      std::vector<char> buffer(1 << 20);
+      std::uint64_t     hash = fnv1a_basis;
+      std::uintmax_t    size = 0;
+      while (in)
+      {
+        in.read(buffer.data(), buffer.size());
+        hash = fnv1a(buffer.data(), in.gcount(), hash);
+        size += in.gcount();
+      }
+      if (in.bad())
+        throw InputError("checkpoint file '" + path + "': read error");
+      return {size, hex(hash)};
+    }
+  } // namespace
+
+  void CheckpointMetadata::record_files(const std::string &directory)
+  {
+    std::vector<std::string> names;
+    for (const auto &entry : fs::directory_iterator(directory))
+      if (entry.path().filename() != "metadata.txt")
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    for (const std::string &name : names)
+    {
+      const auto [size, checksum] = size_and_checksum(directory + "/" + name);
+      strings["file:" + name] = std::to_string(size) + " " + checksum;
+    }
+  }
+
+  std::string CheckpointMetadata::damaged_file(const std::string &directory) const
+  {
+    for (const auto &[key, text] : strings)
+    {
+      if (key.rfind("file:", 0) != 0)
+        continue;
+      const std::string  path = directory + "/" + key.substr(5);
+      std::istringstream recorded(text);
+      std::uintmax_t     size = 0;
+      std::string        checksum;
+      recorded >> size >> checksum;
+      try
+      {
+        const auto [now_size, now_checksum] = size_and_checksum(path);
+        if (now_size != size)
+          return "checkpoint file '" + path + "' is damaged: " + std::to_string(now_size)
+                 + " bytes, written with " + std::to_string(size)
+                 + " (truncated or emptied?); start a new run (--overwrite)";
+        if (now_checksum != checksum)
+          return "checkpoint file '" + path
+                 + "' is damaged: its checksum (FNV-1a) differs from the one recorded when it "
+                   "was written; start a new run (--overwrite)";
+      }
+      catch (const InputError &e)
+      {
+        return std::string(e.what()) + " (the checkpoint in '" + directory
+               + "' is incomplete); start a new run (--overwrite)";
+      }
+    }
+    return "";
+  }
+
   void CheckpointMetadata::write(const std::string &filename) const
   {
-    std::ofstream out(filename);
-    out << std::setprecision(17);
+    std::ostringstream text;
+    text << std::setprecision(17);
+    text << "format " << format_version << '\n';
     for (const auto &[key, v] : values)
     {
-      out << "value " << key << ' ' << v.size();
+      text << "value " << key << ' ' << v.size();
       for (const double x : v)
-        out << ' ' << x;
-      out << '\n';
+        text << ' ' << x;
+      text << '\n';
     }
-    for (const auto &[key, text] : strings)
-      out << "string " << key << ' ' << text << '\n';
-    out << "end\n";
+    for (const auto &[key, line] : strings)
+      text << "string " << key << ' ' << line << '\n';
+    const std::string body = text.str();
+    std::ofstream     out(filename);
+    out << body << "checksum " << hex(fnv1a(body.data(), body.size(), fnv1a_basis)) << '\n'
+        << "end\n";
+    out.close();
     if (!out)
-      throw RunFailure("cannot write checkpoint file '" + filename + "'");
+      throw RunFailure("cannot write checkpoint file '" + filename
+                       + "' (disk full or no permission?); the previous checkpoint is kept");
   }
 
   void CheckpointMetadata::read(const std::string &filename)
   {
-    std::ifstream in(filename);
-    if (!in)
+    if (!fs::exists(filename))
       throw RunFailure("cannot read checkpoint file '" + filename + "'");
-    values.clear();
-    strings.clear();
-    std::string line;
-    bool        complete = false;
+    std::ifstream     in = open_input_file(filename, "checkpoint file", 1u << 30);
+    const std::string damaged = "checkpoint file '" + filename + "' is damaged: ";
+    std::string       body, line, checksum;
+    bool              complete = false;
     while (std::getline(in, line))
     {
-      std::istringstream words(line);
-      std::string        kind, key;
-      words >> kind;
-      if (kind == "end")
+      if (line.rfind("checksum ", 0) == 0)
+        checksum = line.substr(9);
+      else if (line == "end")
       {
         complete = true;
         break;
       }
-      words >> key;
+      else if (checksum.empty())
+        body += line + '\n';
+    }
+    if (!complete)
+      throw InputError(damaged + "incomplete (no 'end' line); start a new run (--overwrite)");
+    if (body.rfind("format ", 0) != 0)
+      throw InputError("checkpoint file '" + filename
+                       + "' has no format version (written by an older ausroll): resume it with "
+                         "that version or start a new run (--overwrite)");
+    if (checksum != hex(fnv1a(body.data(), body.size(), fnv1a_basis)))
+      throw InputError(damaged
+                       + "its checksum differs from its contents (edited?); start a new "
+                         "run (--overwrite)");
+    values.clear();
+    strings.clear();
+    std::istringstream lines(body);
+    while (std::getline(lines, line))
+    {
+      std::istringstream words(line);
+      std::string        kind, key;
+      words >> kind;
+      if (kind == "format")
+      {
+        unsigned int version = 0;
+        words >> version;
+        if (version != format_version)
+          throw InputError("checkpoint file '" + filename + "' has format version "
+                           + std::to_string(version) + ", this ausroll reads version "
+                           + std::to_string(format_version) + "; start a new run (--overwrite)");
+        continue;
+      }
       if (kind == "value")
       {
+        words >> key;
         std::size_t n = 0;
         words >> n;
+        if (!words || n > (1u << 28))
+          throw InputError(damaged + "bad line 'value " + key + "'");
         std::vector<double> v(n);
         for (double &x : v)
           words >> x;
+        if (!words)
+          throw InputError(damaged + "bad line 'value " + key + "'");
         values[key] = v;
       }
       else if (kind == "string")
       {
+        words >> key;
         std::string text;
         std::getline(words, text);
         strings[key] = text.empty() ? text : text.substr(1);
       }
+      else
+        throw InputError(damaged + "unknown line '" + abbreviate(line) + "'");
     }
-    if (!complete)
-      throw RunFailure("checkpoint file '" + filename + "' is incomplete");
   }
 
   double CheckpointMetadata::get(const std::string &key) const
@@ -140,6 +273,18 @@ namespace ausroll::io
 
   namespace
   {
+    /** Whether @p entry is `Contact/Die <k>/<name>` (exactly that entry of some die). */
+    bool is_die_entry(const std::string &entry, const std::string &name)
+    {
+      const std::string prefix = "Contact/Die ", suffix = "/" + name;
+      if (entry.rfind(prefix, 0) != 0 || entry.size() <= prefix.size() + suffix.size())
+        return false;
+      const std::string number
+          = entry.substr(prefix.size(), entry.size() - prefix.size() - suffix.size());
+      return entry.compare(entry.size() - suffix.size(), suffix.size(), suffix) == 0
+             && number.find_first_not_of("0123456789") == std::string::npos;
+    }
+
     /** Entries whose change makes the checkpoint's mesh, DoFs or material points meaningless. */
     bool fixes_discretisation(const std::string &entry)
     {
@@ -148,8 +293,14 @@ namespace ausroll::io
           return true;
       if (entry == "Contact/Number of dies")
         return true;
-      return entry.rfind("Contact/Die ", 0) == 0 && entry.size() > 21
-             && entry.compare(entry.size() - 21, 21, "Candidate boundaries") == 0;
+      return is_die_entry(entry, "Candidate boundaries");
+    }
+
+    /** Entries whose change adds, removes or renames columns of history.csv. */
+    bool fixes_history_columns(const std::string &entry)
+    {
+      return entry == "Postprocess/Monitor points" || entry == "Postprocess/Reaction boundaries"
+             || is_die_entry(entry, "Name");
     }
 
     /** Entries that do not change the computed results. */
@@ -181,15 +332,19 @@ namespace ausroll::io
       const std::string line = entry + " (checkpoint: '" + old + "', now: '" + value + "')";
       if (fixes_discretisation(entry))
         refused += "\n  " + line;
+      else if (fixes_history_columns(entry))
+        refused += "\n  " + line + " (it changes the columns of history.csv)";
       else
         warnings.push_back("--resume: " + line + " changed since the checkpoint was written");
     }
     if (!refused.empty())
-      throw InputError("--resume: entries that fix the mesh, the discretisation or the material "
-                       "differ from those of the checkpoint in "
-                       + directory + ":" + refused
-                       + "\nResume with the values of the checkpoint, or start a new run "
-                         "(--overwrite).");
+      throw InputError(
+          "--resume: entries that fix the mesh, the discretisation, the material or the "
+          "history columns "
+          "differ from those of the checkpoint in "
+          + directory + ":" + refused
+          + "\nResume with the values of the checkpoint, or start a new run "
+            "(--overwrite).");
     return warnings;
   }
 

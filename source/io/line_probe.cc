@@ -19,30 +19,61 @@ namespace ausroll::io
 {
   using namespace dealii;
 
-  template <int dim>
-  LineProbes<dim>::LineProbes(const std::string &specification, const unsigned int n_q_points_1d)
-      : interpolation(n_q_points_1d)
+  std::vector<LineProbeSpecification> parse_line_probes(const std::string &specification,
+                                                        const unsigned int dim)
   {
-    const std::string entry = "Postprocess/Line probes";
+    const std::string                   entry = "Postprocess/Line probes";
+    std::vector<LineProbeSpecification> probes;
+    std::vector<std::string>            names;
     for (const std::string &item : split_and_trim(specification, ';'))
     {
       const auto colon = item.find(':');
       if (colon == std::string::npos || colon == 0)
         throw InputError(entry + ": '" + item + "' must read 'name: x0, y0, x1, y1, n'");
-      Probe probe;
-      probe.name = split_and_trim(item.substr(0, colon), ' ').front();
+      LineProbeSpecification probe;
+      // the whole text before the colon ("a b" is refused, not cut to "a")
+      const std::vector<std::string> before = split_and_trim(item.substr(0, colon), '\n');
+      probe.name = before.empty() ? std::string() : before.front();
+      require_label(probe.name, entry);
       const std::vector<double> v = parse_double_list(item.substr(colon + 1), entry);
+      // Every point is located in the mesh after each mesh change and written at every output.
+      if (v.size() == 2 * dim + 1 && v.back() > max_probe_points)
+      {
+        std::ostringstream n;
+        n << v.back();
+        throw InputError(entry + ": probe '" + probe.name + "' has " + n.str()
+                         + " points, more than ausroll accepts (" + std::to_string(max_probe_points)
+                         + "; each point is searched in the mesh and written at every output)");
+      }
       if (v.size() != 2 * dim + 1 || v.back() < 2
           || v.back() != static_cast<unsigned int>(v.back()))
         throw InputError(entry + ": '" + item + "' needs " + std::to_string(dim)
                          + " start coordinates, " + std::to_string(dim)
                          + " end coordinates and a number of points >= 2");
+      probe.start.assign(v.begin(), v.begin() + dim);
+      probe.end.assign(v.begin() + dim, v.begin() + 2 * dim);
+      probe.n_points = static_cast<unsigned int>(v.back());
+      probes.push_back(probe);
+      names.push_back(probe.name);
+    }
+    require_unique_labels(names, entry);
+    return probes;
+  }
+
+  template <int dim>
+  LineProbes<dim>::LineProbes(const std::string &specification, const unsigned int n_q_points_1d)
+      : interpolation(n_q_points_1d)
+  {
+    for (const LineProbeSpecification &p : parse_line_probes(specification, dim))
+    {
+      Probe probe;
+      probe.name = p.name;
       for (unsigned int d = 0; d < dim; ++d)
       {
-        probe.start[d] = v[d];
-        probe.end[d] = v[dim + d];
+        probe.start[d] = p.start[d];
+        probe.end[d] = p.end[d];
       }
-      const unsigned int n = static_cast<unsigned int>(v.back());
+      const unsigned int n = p.n_points;
       for (unsigned int i = 0; i < n; ++i)
       {
         Sample s;

@@ -56,8 +56,23 @@ namespace ausroll::io
     }
     meta.values["output_times"] = output_times;
     meta.strings["output_files"] = output_files;
+    // every rank has closed its part of the mesh files
+    MPI_Barrier(system.comm);
+    std::string error;
     if (Utilities::MPI::this_mpi_process(system.comm) == 0)
-      meta.write(dir + "/metadata.txt");
+      try
+      {
+        meta.record_files(dir);
+        meta.write(dir + "/metadata.txt");
+      }
+      catch (const std::exception &e)
+      {
+        error = e.what();
+      }
+    // a checkpoint that could not be completed is not swapped in: the previous one stays
+    error = Utilities::MPI::broadcast(system.comm, error, 0);
+    if (!error.empty())
+      throw RunFailure(error);
     checkpoints.commit();
   }
 
@@ -69,6 +84,14 @@ namespace ausroll::io
     const std::string  directory = CheckpointDirectory(output_directory, system.comm).latest();
     CheckpointMetadata meta;
     meta.read(directory + "/metadata.txt");
+    // Every file is checked before p4est or deal.II sees it (an emptied p4est file aborts in
+    // p4est, an emptied data file crashes, a bit flip loads and gives NaN later).
+    std::string damaged;
+    if (Utilities::MPI::this_mpi_process(system.comm) == 0)
+      damaged = meta.damaged_file(directory);
+    damaged = Utilities::MPI::broadcast(system.comm, damaged, 0);
+    if (!damaged.empty())
+      throw InputError("--resume: " + damaged);
     for (const std::string &warning : compare_resume_parameters(meta, entries, directory))
       if (Utilities::MPI::this_mpi_process(system.comm) == 0)
         std::cerr << "ausroll: warning: " << warning << std::endl;

@@ -1,3 +1,4 @@
+#include <ausroll/core/exceptions.h>
 #include <ausroll/io/solution_writer.h>
 
 #include <deal.II/base/data_out_base.h>
@@ -5,7 +6,10 @@
 #include <deal.II/fe/mapping_q_eulerian.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 
 namespace ausroll::io
@@ -35,6 +39,15 @@ namespace ausroll::io
                                          const std::vector<NodalField>       &nodal_fields,
                                          const bool                           deformed)
   {
+    // Before anything of this output is written (rank 0 writes the record; an error found there
+    // alone ends every rank, see main.cc).
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+    {
+      std::error_code ec;
+      if (std::filesystem::is_directory(directory + "/solution.pvd", ec))
+        throw InputError("Output/Directory: cannot write '" + directory
+                         + "/solution.pvd': a directory of that name is in the way; remove it");
+    }
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     const std::vector<std::string> names(dim, "displacement");
@@ -66,19 +79,42 @@ namespace ausroll::io
     flags.cycle = counter;
     flags.write_higher_order_cells = false;
     data_out.set_flags(flags);
-    const std::string pvtu
-        = data_out.write_vtu_with_pvtu_record(directory + "/", "solution", counter, comm, 4);
+    std::string pvtu;
+    try
+    {
+      pvtu = data_out.write_vtu_with_pvtu_record(directory + "/", "solution", counter, comm, 4);
+    }
+    catch (const std::exception &)
+    {
+      // deal.II reports a failed write (full disk, a directory in the way) as an internal
+      // assertion; say which files could not be written.
+      throw RunFailure("cannot write the solution files '" + directory + "/solution_"
+                       + Utilities::int_to_string(counter, 4)
+                       + "*.vtu' (disk full, no permission, or a directory of that name?)");
+    }
 
     time_series.emplace_back(time, pvtu);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
     {
       const std::string pvd = directory + "/solution.pvd";
       const std::string tmp = pvd + ".tmp";
+      std::error_code   ec;
       {
         std::ofstream out(tmp);
         DataOutBase::write_pvd_record(out, time_series);
+        out.close();
+        if (!out)
+        {
+          std::filesystem::remove(tmp, ec);
+          throw RunFailure("cannot write '" + tmp + "' (disk full or no permission?)");
+        }
       }
-      std::rename(tmp.c_str(), pvd.c_str());
+      if (std::rename(tmp.c_str(), pvd.c_str()) != 0)
+      {
+        const std::string reason = std::strerror(errno);
+        std::filesystem::remove(tmp, ec);
+        throw RunFailure("cannot replace '" + pvd + "' by '" + tmp + "': " + reason);
+      }
     }
     return pvtu;
   }

@@ -1,6 +1,8 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/mechanics/model_parameters.h>
 
+#include <algorithm>
+
 namespace ausroll::mechanics
 {
   using namespace dealii;
@@ -70,5 +72,17 @@ namespace ausroll::mechanics
             "Model/Volumetric locking treatment",
             "F-bar needs at least 2 quadrature points per direction (Model/Quadrature points); "
             "with one point the volume change is constant per cell already");
+    // Fewer points than the degree (one point for Q1) leave zero-energy (hourglass) modes in
+    // every cell: the tangent is singular and the linear solver fails.
+    const unsigned int minimum = std::max(2u, degree);
+    require(quadrature_points >= minimum,
+            "Model/Quadrature points",
+            std::to_string(quadrature_points)
+                + " per direction is too few for Model/Polynomial "
+                  "degree = "
+                + std::to_string(degree)
+                + ": the element stiffness has zero-energy "
+                  "(hourglass) modes and the tangent is singular; use at least "
+                + std::to_string(minimum) + " (0: degree + 1, the default)");
   }
 } // namespace ausroll::mechanics

@@ -3,6 +3,7 @@
 #include <ausroll/core/exceptions.h>
 
 #include <exception>
+#include <iostream>
 #include <memory>
 #include <string>
 
@@ -37,9 +38,18 @@ namespace ausroll::scene
     }
 
     template <int dim>
-    void run_scene_in(const SceneParameters &parameters, const MPI_Comm comm, const bool resume)
+    void run_scene_in(const SceneParameters &parameters,
+                      const MPI_Comm         comm,
+                      const bool             resume,
+                      const bool             check_only)
     {
-      std::unique_ptr<Scene<dim>> scene = std::make_unique<Scene<dim>>(parameters, comm, resume);
+      std::unique_ptr<Scene<dim>> scene
+          = std::make_unique<Scene<dim>>(parameters, comm, resume, check_only);
+      if (check_only)
+      {
+        scene->print_sizes(std::cout);
+        return;
+      }
       try
       {
         scene->run();
@@ -58,7 +68,8 @@ namespace ausroll::scene
   void run_scene(const std::string                    &parameter_file,
                  const MPI_Comm                        comm,
                  const bool                            resume,
-                 const std::vector<ParameterOverride> &overrides)
+                 const std::vector<ParameterOverride> &overrides,
+                 const bool                            check_only)
   {
     const SceneParameters parameters = read_parameter_file(parameter_file, overrides);
     // A three-dimensional `Geometry/Type` runs Scene<3>; the planar shapes (and a mesh file)
@@ -66,10 +77,10 @@ namespace ausroll::scene
     if (parameters.geometry.dimension() == 3)
     {
       require_three_dimensional_settings(parameters);
-      run_scene_in<3>(parameters, comm, resume);
+      run_scene_in<3>(parameters, comm, resume, check_only);
     }
     else
-      run_scene_in<2>(parameters, comm, resume);
+      run_scene_in<2>(parameters, comm, resume, check_only);
   }
 
 } // namespace ausroll::scene

@@ -22,10 +22,14 @@ namespace ausroll::scene
   using io::Verbosity;
 
   template <int dim>
-  Scene<dim>::Scene(const SceneParameters &prm, const MPI_Comm comm, const bool resume)
+  Scene<dim>::Scene(const SceneParameters &prm,
+                    const MPI_Comm         comm,
+                    const bool             resume,
+                    const bool             check_only)
       : parameters(prm)
       , comm(comm)
       , resuming(resume)
+      , checking(check_only)
       , rank(Utilities::MPI::this_mpi_process(comm))
       , log(std::cout,
             io::prints(prm.output.verbosity, {Verbosity::normal, Verbosity::verbose}, rank))
@@ -56,11 +60,13 @@ namespace ausroll::scene
       const std::string &dir = parameters.output.directory;
       // When resuming: the coarse mesh, then the refined, partitioned mesh of the checkpoint,
       // unless the entries that made that mesh were changed.
-      geometry::create_workpiece(parameters.geometry, system.triangulation, !resuming);
+      geometry::create_workpiece(parameters.geometry,
+                                 system.triangulation,
+                                 !resuming,
+                                 [this](const double n) { check_sizes(parameters, n, dim); });
       if (resuming)
         checkpoint_directory = io::load_checkpoint_mesh(system, parameters.entries, dir);
-      geometry::require_dof_estimate(
-          system.triangulation.n_global_active_cells(), parameters.model.degree, dim);
+      check_sizes(parameters, system.triangulation.n_global_active_cells(), dim);
       assembler = std::make_unique<mechanics::Assembler<dim>>(system.mapping,
                                                               system.fe,
                                                               parameters.model.quadrature_points,
@@ -100,10 +106,14 @@ namespace ausroll::scene
       {
         // Input errors found here leave no output directory behind.
         check_setup(parameters, system.triangulation, boundary_conditions, contact);
-        io::prepare_output_directory(dir, parameters.output.overwrite, comm);
-        io::write_parameter_copy(dir, parameters.effective_parameters, comm);
+        if (!checking)
+        {
+          io::prepare_output_directory(dir, parameters.output.overwrite, comm);
+          io::write_parameter_copy(dir, parameters.effective_parameters, comm);
+        }
       }
-      postprocessors->open_vtu_writer(dir);
+      if (!checking)
+        postprocessors->open_vtu_writer(dir);
     }
     catch (...)
     {

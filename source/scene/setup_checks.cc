@@ -1,10 +1,13 @@
 #include <ausroll/core/parse_utilities.h>
 #include <ausroll/geometry/workpiece.h>
+#include <ausroll/io/line_probe.h>
 #include <ausroll/scene/setup_checks.h>
 
 #include <deal.II/grid/grid_tools.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -48,6 +51,35 @@ namespace ausroll::scene
     if (contact.active())
       contact.check_dies(
           times, box.get_boundary_points().first.distance(box.get_boundary_points().second));
+  }
+
+  mechanics::MemoryEstimate
+  check_sizes(const SceneParameters &parameters, const double n_cells, const unsigned int dim)
+  {
+    const unsigned int degree = parameters.model.degree;
+    geometry::require_dof_estimate(n_cells, degree, dim);
+    // the samples of every line probe (checked here, before the memory estimate counts them)
+    double probe_points = 0.;
+    for (const io::LineProbeSpecification &probe :
+         io::parse_line_probes(parameters.postprocess.line_probes, dim))
+      probe_points += probe.n_points;
+    const double dofs = dim * n_cells * std::pow(double(degree), double(dim));
+    const auto  &linear = parameters.solver.linear;
+    const bool   direct = linear.type == solver::LinearSolverType::direct
+                        || (linear.type == solver::LinearSolverType::automatic
+                            && (dim == 2 || dofs < linear.automatic_iterative_threshold));
+    const mechanics::MemoryEstimate estimate = mechanics::estimate_memory(
+        dim, n_cells, degree, parameters.model.quadrature_points, direct, probe_points);
+    const geometry::GeometryParameters &g = parameters.geometry;
+    mechanics::require_memory(
+        estimate,
+        "Geometry/Global refinements = " + std::to_string(g.global_refinements)
+            + ", Geometry/Local refinements = " + std::to_string(g.local_refinements)
+            + ", Model/Polynomial degree = " + std::to_string(degree)
+            + ", Model/Quadrature points = " + std::to_string(parameters.model.quadrature_points)
+            + (direct ? ", Solver/Linear solver/Type (direct)" : "")
+            + (probe_points > 0. ? ", Postprocess/Line probes" : ""));
+    return estimate;
   }
 
   template void check_setup(const SceneParameters &,

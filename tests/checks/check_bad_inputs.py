@@ -4,10 +4,15 @@
 Each file states what it expects in its first lines:
     # expect: <text that must appear in the error message>
     # exit: <status>            (optional, default 2 = input error)
-    # args: <extra arguments>   (optional, e.g. --resume; shell-quoted: --set "A/B=c d")
+    # args: <extra arguments>   (optional, e.g. --resume; shell-quoted: --set "A/B=c d"; the
+                                 two characters \\n inside quotes become a line break)
     # with: <files>             (optional: files next to the case it needs, e.g. an include
                                  that is not itself a case: name them *.inc)
     # mkdir: <directories>      (optional: directories to create in the working directory)
+    # mkfifo: <paths>           (optional: named pipes to create there, e.g. a .prm that would
+                                 block a reader forever)
+    # symlink: <link> <target>  (optional: a symbolic link to create there; a link to itself is
+                                 a loop)
     # file: <path>              (optional: what to pass as FILE.prm instead of the case itself;
                                  an option such as --print-parameters=json is passed as it is)
 A case passes if ausroll exits with that status, prints the expected text on stderr, does not
@@ -30,14 +35,17 @@ import tempfile
 
 
 def expectations(path):
-    e = {"expect": None, "exit": 2, "args": [], "with": [], "mkdir": [], "file": None}
+    e = {"expect": None, "exit": 2, "args": [], "with": [], "mkdir": [], "mkfifo": [],
+         "symlink": [], "file": None}
     with open(path, encoding="utf-8", errors="replace") as f:
         for line in f:
             line = line.lstrip("\ufeff")
             for key in e:
                 if line.startswith(f"# {key}:"):
                     value = line.split(":", 1)[1].strip()
-                    if key in ("args", "with", "mkdir"):
+                    if key == "args":
+                        e[key] = [a.replace("\\n", "\n") for a in shlex.split(value)]
+                    elif key in ("with", "mkdir", "mkfifo", "symlink"):
                         e[key] = shlex.split(value)
                     elif key == "exit":
                         e[key] = int(value)
@@ -84,6 +92,10 @@ def main():
                 shutil.copy(os.path.join(directory, other), work)
             for d in e["mkdir"]:
                 os.makedirs(os.path.join(work, d), exist_ok=True)
+            for f in e["mkfifo"]:
+                os.mkfifo(os.path.join(work, f))
+            if e["symlink"]:
+                os.symlink(e["symlink"][1], os.path.join(work, e["symlink"][0]))
             target = os.path.join(work, e["file"] if e["file"] else name)
             if e["file"] and e["file"].startswith("-"):  # an option instead of a file
                 target = e["file"]

@@ -99,7 +99,9 @@ namespace ausroll::contact
     /**
      * Plausibility of the dies before a run (call after setup()): throws InputError naming the die
      * if it has no candidate nodes, if the undeformed workpiece starts deep inside it (more than
-     * 5 % of the workpiece size: usually a flipped Normal or Material inside), or if it never comes
+     * 5 % of the workpiece size: usually a flipped Normal or Material inside), overlaps it by
+     * more than a tenth of the smallest cell (the first step cannot push the nodes out), or if it
+     * never comes
      * within a quarter of the workpiece size of the undeformed workpiece at any of @p times.
      * @p workpiece_size is the diameter of the workpiece's bounding box.
      */
@@ -403,6 +405,7 @@ namespace ausroll::contact
     MPI_Comm                                    comm = MPI_COMM_WORLD;
     double                                      time = 0.;
     double                                      gap_tolerance = 1e-10;
+    double smallest_cell = 0.; ///< smallest cell diameter of the mesh (setup(): length_scale)
     /** 3D: slips over a step longer than this (1e-2 of the length scale) set the slip direction
         at every iterate (with its derivative in the tangent: add_slip_direction_tangent()); shorter
         ones keep it (update_slip_direction()). */

@@ -37,6 +37,20 @@ namespace ausroll
    */
   void require_expression_length(const std::string &expression, const std::string &entry);
 
+  /**
+   * Refuse a label that names history columns and files (a die's `Name`, a monitor point, a line
+   * probe) unless it is 1 to 64 letters, digits, '_', '-' or '.', and not "." or "..": a comma
+   * would shift every column of history.csv, a '/' or ".." would put a file elsewhere or
+   * nowhere. InputError "<entry>: '<name>' must be a single word of ...".
+   */
+  void require_label(const std::string &name, const std::string &entry);
+
+  /**
+   * Refuse a name that appears twice in @p names (labels of one list, e.g. the monitor points):
+   * InputError "<entry>: the name '<name>' is used twice ...".
+   */
+  void require_unique_labels(const std::vector<std::string> &names, const std::string &entry);
+
   /** Parse "x, y[, z]" into a point with exactly dim coordinates. */
   template <int dim>
   dealii::Point<dim> parse_point(const std::string &text, const std::string &entry);

@@ -58,6 +58,12 @@ namespace ausroll::geometry
     unsigned int teeth = 1;        ///< `Teeth` in the meshed sector
     bool         fix_root = false; ///< `Fix root`: side cuts get the inner arc's id 1
 
+    /**
+     * One more than the most `Teeth` a sector may have: half the gear (a sector is bounded by two
+     * radial cuts; a whole gear has none and its manifolds fail).
+     */
+    unsigned int max_sector_teeth() const { return n_teeth / 2 + 1; }
+
     /** Declare subsection `Gear tooth` (call inside subsection `Geometry`). */
     static void declare_parameters(dealii::ParameterHandler &prm);
     /** Read subsection `Gear tooth` (inside `Geometry`); throws InputError for bad values. */

@@ -8,6 +8,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,12 +33,15 @@ namespace ausroll::geometry
    * coarse mesh, boundary ids, manifolds on curved boundaries (so that refined boundary points lie
    * on the exact surface), then (with @p refine) `Global refinements` uniform and the local
    * refinements. Without
-   * @p refine only the coarse mesh is built (as needed to load a checkpoint).
+   * @p refine only the coarse mesh is built (as needed to load a checkpoint). @p check_cells, if
+   * given, is called with the number of cells the global refinements will make before they are
+   * made (the memory estimate of the whole discretisation refuses a too large input there).
    */
   template <int dim>
-  void create_workpiece(const GeometryParameters   &parameters,
-                        dealii::Triangulation<dim> &triangulation,
-                        const bool                  refine = true);
+  void create_workpiece(const GeometryParameters                  &parameters,
+                        dealii::Triangulation<dim>                &triangulation,
+                        const bool                                 refine = true,
+                        const std::function<void(double n_cells)> &check_cells = {});
 
   /**
    * InputError naming @p entry unless every id of @p ids is a boundary id of @p triangulation

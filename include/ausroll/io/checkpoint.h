@@ -43,10 +43,30 @@ namespace ausroll::io
     std::map<std::string, std::vector<double>> values;  ///< numeric entries
     std::map<std::string, std::string>         strings; ///< text entries (one line each)
 
-    /** Write to @p filename (call on one rank). */
+    /** Version of the checkpoint layout; a checkpoint of another version is refused. */
+    static constexpr unsigned int format_version = 2;
+
+    /**
+     * Write to @p filename (call on one rank): a `format` line, the entries, and a `checksum`
+     * line (FNV-1a 64 of everything before it). RunFailure if it cannot be written.
+     */
     void write(const std::string &filename) const;
-    /** Read from @p filename; throws RunFailure if missing or damaged. */
+    /**
+     * Read from @p filename: RunFailure if it does not exist; InputError naming it if it is
+     * damaged (incomplete, checksum differs, unknown line) or of another format version.
+     */
     void read(const std::string &filename);
+
+    /**
+     * Record size and FNV-1a 64 checksum of every other file in @p directory (the p4est mesh
+     * and its data files) as strings `file:<name>` (call on one rank after they are written).
+     */
+    void record_files(const std::string &directory);
+    /**
+     * "" if every file recorded by record_files() is in @p directory with its size and
+     * checksum; otherwise the message naming the first damaged or missing file.
+     */
+    std::string damaged_file(const std::string &directory) const;
     /** The single value @p key (RunFailure if missing). */
     double get(const std::string &key) const;
 
@@ -60,9 +80,11 @@ namespace ausroll::io
    * Compare the entries of a run being resumed (@p now) with those stored in its checkpoint
    * (@p meta, read from @p directory). Entries that fix the mesh, the discretisation or the
    * material point layout (`Geometry/`, `Model/`, `Material/`, `Adaptivity/`, `Contact/Number of
-   * dies`, `Contact/Die N/Candidate boundaries`) must not differ: InputError listing each such
-   * entry with both values. Returns a warning line for every other changed entry (e.g.
-   * `Loading/End time`, `Output/Interval`), and one if the checkpoint holds no entries.
+   * dies`, `Contact/Die N/Candidate boundaries`) or the columns of history.csv
+   * (`Postprocess/Monitor points`, `Postprocess/Reaction boundaries`, `Contact/Die N/Name`) must
+   * not differ: InputError listing each such entry with both values. Returns a warning line for
+   * every other changed entry (e.g. `Loading/End time`, `Output/Interval`), and one if the
+   * checkpoint holds no entries.
    */
   std::vector<std::string> compare_resume_parameters(const CheckpointMetadata                 &meta,
                                                      const std::map<std::string, std::string> &now,

@@ -29,7 +29,10 @@ namespace ausroll::io
 
     /**
      * Resume a history: keep the header and the rows of steps up to @p last_step of the existing
-     * file @p path (rank 0 rewrites it), then append.
+     * file @p path (rank 0 rewrites it), then append. InputError naming the file and line if it
+     * cannot be read or a row does not start with a step number (an edited file); the first
+     * row added must have the columns of the file's header (InputError otherwise: a resume that
+     * adds a monitor point would write rows that do not fit the header).
      */
     static std::unique_ptr<History>
     resume(const MPI_Comm comm, const std::string &path, const unsigned int last_step);
@@ -43,5 +46,6 @@ namespace ausroll::io
     std::vector<std::string> columns;               ///< names fixed by the first row
     std::string              path;                  ///< file name, for messages
     bool                     header_pending = true; ///< the file has no header line yet
+    std::string resumed_header; ///< header of a resumed file, checked against the first new row
   };
 } // namespace ausroll::io

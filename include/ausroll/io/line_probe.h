@@ -16,6 +16,27 @@
 
 namespace ausroll::io
 {
+  /** Most points of one line probe (`Postprocess/Line probes`). */
+  constexpr unsigned int max_probe_points = 1000000;
+
+  /** One line of `Postprocess/Line probes` as written: "name: x0, y0[, z0], x1, y1[, z1], n". */
+  struct LineProbeSpecification
+  {
+    std::string         name;     ///< a label (core's require_label())
+    std::vector<double> start;    ///< dim coordinates
+    std::vector<double> end;      ///< dim coordinates
+    unsigned int        n_points; ///< 2 to max_probe_points
+  };
+
+  /**
+   * Parse `Postprocess/Line probes` for @p dim dimensions without allocating any sample:
+   * InputError naming the entry for a malformed item, a bad or repeated name, or more than
+   * max_probe_points points (the set-up's memory estimate counts the points before the probes
+   * are built).
+   */
+  std::vector<LineProbeSpecification> parse_line_probes(const std::string &specification,
+                                                        unsigned int       dim);
+
   /**
    * Samples displacement (FE interpolation) and Cauchy stress and equivalent plastic strain
    * (Lagrange interpolation of the material points of the containing cell) at equally spaced

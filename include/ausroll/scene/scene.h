@@ -47,8 +47,22 @@ namespace ausroll::scene
   class Scene : public solver::SteppedProblem
   {
   public:
-    /** Build the scene described by @p parameters on communicator @p comm. */
-    Scene(const SceneParameters &parameters, const MPI_Comm comm, const bool resume = false);
+    /**
+     * Build the scene described by @p parameters on communicator @p comm (from the latest
+     * checkpoint if @p resume). With @p check_only (`--check-input`) everything is built and
+     * checked but the output directory is neither created nor written.
+     */
+    Scene(const SceneParameters &parameters,
+          const MPI_Comm         comm,
+          const bool             resume = false,
+          const bool             check_only = false);
+
+    /**
+     * `--check-input`: print the sizes of the discretisation (cells, DoFs, quadrature points,
+     * matrix entries, estimated memory, nominal load steps) to @p out (rank 0).
+     * Defined in check_input.cc.
+     */
+    void print_sizes(std::ostream &out) const;
 
     /**
      * Run all load steps. Throws RunFailure (after writing the last converged state) when a step
@@ -146,6 +160,7 @@ namespace ausroll::scene
     SceneParameters parameters; ///< the input
     MPI_Comm        comm;       ///< communicator
     bool            resuming;   ///< started with --resume: state from the latest checkpoint
+    bool            checking;   ///< built by --check-input: nothing is written
     std::string     checkpoint_directory; ///< checkpoint read when resuming
     unsigned int    rank;                 ///< this process
 
@@ -207,9 +222,14 @@ namespace ausroll::scene
     dealii::Timer wall_clock;
   };
 
-  /** Read @p parameter_file and run the scene on @p comm (dispatch on the dimension). */
+  /**
+   * Read @p parameter_file and run the scene on @p comm (dispatch on the dimension). With
+   * @p check_only (`--check-input`): build the scene, run the set-up checks, print its sizes
+   * (Scene::print_sizes()) and return without writing anything.
+   */
   void run_scene(const std::string                    &parameter_file,
                  const MPI_Comm                        comm,
                  const bool                            resume = false,
-                 const std::vector<ParameterOverride> &overrides = {});
+                 const std::vector<ParameterOverride> &overrides = {},
+                 const bool                            check_only = false);
 } // namespace ausroll::scene

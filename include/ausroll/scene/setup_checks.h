@@ -7,6 +7,7 @@
 
 #include <ausroll/contact/contact_operator.h>
 #include <ausroll/mechanics/boundary_conditions.h>
+#include <ausroll/mechanics/memory_estimate.h>
 #include <ausroll/scene/scene_parameters.h>
 
 #include <deal.II/grid/tria.h>
@@ -26,4 +27,14 @@ namespace ausroll::scene
                    const dealii::Triangulation<dim>         &triangulation,
                    const mechanics::BoundaryConditions<dim> &boundary_conditions,
                    const contact::ContactOperator<dim>      &contact);
+
+  /**
+   * The sizes of a discretisation of @p n_cells active cells in @p dim dimensions with the
+   * element, quadrature, linear solver and line probes of @p parameters, checked before any DoF
+   * or material point is allocated: InputError if the DoFs exceed geometry::max_dofs or the
+   * estimated memory exceeds the machine's (mechanics::require_memory()), naming the entries
+   * that set the size with their values. Returns the estimate (printed by --check-input).
+   */
+  mechanics::MemoryEstimate
+  check_sizes(const SceneParameters &parameters, double n_cells, unsigned int dim);
 } // namespace ausroll::scene

@@ -38,3 +38,9 @@ add_test(NAME check/restart_safety
     -P ${AUSROLL_CHECKS_DIR}/run_restart_safety_check.cmake
   WORKING_DIRECTORY ${_dir})
 set_tests_properties(check/restart_safety PROPERTIES LABELS check TIMEOUT 600)
+
+# Damaged checkpoints (emptied, truncated, bit-flipped or missing p4est and data files, edited or
+# emptied metadata), an edited history.csv and resumes that change Candidate boundaries or add a
+# monitor point: each ends with exit 2 and a message naming the file or entry (before: p4est
+# abort, segfault, NaN later, a corrupted history.csv); an undamaged copy resumes. About 15 s.
+ausroll_add_script_check(NAME damaged_restarts SCRIPT ${AUSROLL_CHECKS_DIR}/check_damaged_restarts.py)

@@ -23,3 +23,12 @@ add_test(NAME check/parameters_doc_current
   COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:ausroll> -DDOC=${CMAKE_SOURCE_DIR}/doc/parameters.md
           -DOUT=${CMAKE_CURRENT_BINARY_DIR}/parameters.md -P ${AUSROLL_CHECKS_DIR}/run_doc_check.cmake)
 set_tests_properties(check/parameters_doc_current PROPERTIES LABELS "check;quick")
+
+# `--check-input` on a 2D and a 3D shipped scene: exit 0, the sizes printed, nothing written; a
+# refused entry: exit 2, nothing written. A few seconds.
+ausroll_add_script_check(NAME check_input_mode SCRIPT ${AUSROLL_CHECKS_DIR}/check_input_mode.py)
+
+# Abaqus mesh import (Geometry/Mesh file = block_5x2.inp, surfaces SS1..SS3 as boundary ids): the
+# pressed block agrees with the same mesh built internally (1e-9) and the analytic die force
+# (1e-6). A few seconds.
+ausroll_add_script_check(NAME abaqus_mesh SCRIPT ${AUSROLL_CHECKS_DIR}/check_abaqus_mesh.py)

@@ -12,3 +12,13 @@ foreach(_scene head_forming_short flat_punch_short cantilever_short)
 endforeach()
 ausroll_add_parallel_check(NAME upsetting_short_np2 PRM ${CMAKE_SOURCE_DIR}/tests/upsetting_short.prm
   HISTORY out/history.csv)
+
+# An error that only rank 0 finds (a directory named history.csv in the output directory) ends
+# both ranks within seconds with exit 2 and the message (before: rank 1 waited forever).
+set(_dir ${CMAKE_CURRENT_BINARY_DIR}/rank_error_np2)
+file(MAKE_DIRECTORY ${_dir})
+add_test(NAME check/rank_error_np2
+  COMMAND ${Python3_EXECUTABLE} ${AUSROLL_CHECKS_DIR}/check_rank_error.py $<TARGET_FILE:ausroll>
+          ${CMAKE_SOURCE_DIR} ${DEAL_II_MPIEXEC}
+  WORKING_DIRECTORY ${_dir})
+set_tests_properties(check/rank_error_np2 PROPERTIES LABELS check TIMEOUT 120 PROCESSORS 2)
