@@ -547,7 +547,7 @@ namespace ausroll::contact
   std::vector<Point<2>> DieSurface::read_points_file(const std::string &filename)
   {
     const std::string where = "Die surface points file '" + filename + "'";
-    std::ifstream in
+    std::ifstream     in
         = open_input_file(filename, "Die surface points file", file_size_limit::points_file);
     std::vector<Point<2>> points;
     std::string           line;

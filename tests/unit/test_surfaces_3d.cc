@@ -1004,6 +1004,7 @@ TEST(Surfaces3D, PointAtInvertsTheProjection)
       {a + quarter + 2. * b + quarter + a, Point<3>(0., 0., -1.5)}};
   for (const auto &[s, canonical] : known)
     EXPECT_LE((cylinder.point_at({{s, 0.}}) - frame.to_local(canonical)).norm(), 1e-12) << s;
+}
 
 TEST(Surfaces3D, ConeParameters)
 {
