@@ -150,8 +150,9 @@ TEST(DieEndPenetration, RevolvedAndExtrudedProfiles3d)
   {
     return contact::RigidDie<3>(
         parse_die("set Shape = revolved profile\nset Search distance = 3\nsubsection Revolved "
-                  "profile\nsubsection Profile\nset Type = polyline\nset Points = "
-                  + points + "\nset Extend ends = " + (extend ? "true" : "false") + "\nend\nend\n"),
+                  "profile\nsubsection Profile\nset Type = polyline\nset Extend ends = "
+                  + std::string(extend ? "true" : "false")
+                  + "\nsubsection Polyline\nset Points = " + points + "\nend\nend\nend\n"),
         0);
   };
   const contact::RigidDie<3> bore = revolved_die("10, -1; 10, 10", true);
@@ -173,7 +174,7 @@ TEST(DieEndPenetration, RevolvedAndExtrudedProfiles3d)
   const contact::RigidDie<3> plate(
       parse_die("set Shape = extruded profile\nsubsection Extruded profile\nset Extent = "
                 "finite\nset Start z = 0\nset End z = 5\nsubsection Profile\nset Type = "
-                "polyline\nset Points = 0, 0; 10, 0\nend\nend\n"),
+                "polyline\nsubsection Polyline\nset Points = 0, 0; 10, 0\nend\nend\nend\n"),
       0);
   EXPECT_NEAR(depth(plate, Point<3>(5., -0.5, 2.)), 0.5, tol);
   EXPECT_NEAR(depth(plate, Point<3>(5., -0.5, 4.8)), 0.2, tol); // 0.2 from End z
