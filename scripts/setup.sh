@@ -19,7 +19,7 @@ export DEAL_II_NUM_THREADS="${DEAL_II_NUM_THREADS:-1}"
 
 ausroll_packages=(
   cmake g++ make perl python3 python3-matplotlib clang-format
-  libdeal.ii-dev libeigen3-dev libgtest-dev numdiff openmpi-bin
+  libdeal.ii-dev libgtest-dev numdiff openmpi-bin
 )
 
 ausroll_install_missing() {
