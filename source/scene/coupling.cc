@@ -49,8 +49,6 @@ namespace ausroll::scene
       return;
     thermal->initialize();
     thermal->set_point_temperatures(system.material_points, true);
-    if (parameters.phases.enabled)
-      initialize_carbon();
     ++system.assembly_cache.state;
   }
 

@@ -456,7 +456,12 @@ namespace ausroll::scene
         if (!adapt_mesh(std::min(nominal_dt, parameters.loading.end_time)))
           break;
       if (parameters.adaptivity.initial_cycles > 0)
-        initialize_temperature(); // the initial field on the refined mesh, not interpolated
+      {
+        // the initial fields on the refined mesh, not interpolated
+        initialize_temperature();
+        if (parameters.phases.enabled)
+          initialize_carbon();
+      }
       solver::NewtonResult initial;
       initial.converged = true;
       history->add_row(postprocessors->history_row(postprocess_input(&initial, 0)));

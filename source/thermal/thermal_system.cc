@@ -355,27 +355,28 @@ namespace ausroll::thermal
                                              Vector                     *residual)
   {
     std::fill(balance.die_heat.begin(), balance.die_heat.end(), 0.);
-    // (no early return on a rank without contact nodes: the die heat is summed over all ranks)
-    // the temperature DoF at each contact node: the displacement x DoF of base index i of a
+    // No early return on a rank without contact nodes: the die heat is summed over all ranks.
+    // The temperature DoF at each contact node: the displacement x DoF of base index i of a
     // cell sits where the temperature DoF i of that cell sits (same degree, same mesh)
     std::unordered_map<types::global_dof_index, types::global_dof_index> thermal_dof;
     const FiniteElement<dim>            &mechanical_fe = displacement_dofs.get_fe();
     std::vector<types::global_dof_index> mechanical(mechanical_fe.n_dofs_per_cell()),
         own(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!contacts.empty() && cell->is_locally_owned())
-      {
-        const typename DoFHandler<dim>::active_cell_iterator mechanical_cell(
-            &triangulation, cell->level(), cell->index(), &displacement_dofs);
-        mechanical_cell->get_dof_indices(mechanical);
-        cell->get_dof_indices(own);
-        for (unsigned int j = 0; j < mechanical.size(); ++j)
+    if (!contacts.empty())
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
         {
-          const auto [component, i] = mechanical_fe.system_to_component_index(j);
-          if (component == 0)
-            thermal_dof[mechanical[j]] = own[i];
+          const typename DoFHandler<dim>::active_cell_iterator mechanical_cell(
+              &triangulation, cell->level(), cell->index(), &displacement_dofs);
+          mechanical_cell->get_dof_indices(mechanical);
+          cell->get_dof_indices(own);
+          for (unsigned int j = 0; j < mechanical.size(); ++j)
+          {
+            const auto [component, i] = mechanical_fe.system_to_component_index(j);
+            if (component == 0)
+              thermal_dof[mechanical[j]] = own[i];
+          }
         }
-      }
     const double                         h = parameters.contact_conductance;
     const double                         eta = parameters.friction_heat_partition;
     FullMatrix<double>                   m(1, 1);

@@ -84,6 +84,34 @@ from checklist import Checklist, ausroll_command  # noqa: E402
 E, NU, SIGMA0, H = 210000.0, 0.3, 240.0, 1000.0  # the block's material
 RHO_C = 7.85e-9 * 4.6e8
 ALPHA = 1.2e-5
+CARBON = 0.8  # wt%, the phase cases
+# Andrews' martensite start (the default of Phases/Martensite start temperature: AISI 9310 with
+# 0.55 Mn, 3.25 Ni, 1.2 Cr, 0.12 Mo), degrees C
+MS = 539 - 423 * CARBON - 30.4 * 0.55 - 17.7 * 3.25 - 12.1 * 1.2 - 7.5 * 0.12
+
+
+def faces_held_at(value):
+    """--set entries holding all six faces of the 3D block at the temperature expression value."""
+    entries = ["Thermal/Number of conditions=6"]
+    for face in range(6):
+        entries += [f"Thermal/Condition {face}/Boundary id={face}", f"Thermal/Condition {face}/Type=temperature",
+                    f"Thermal/Condition {face}/Value={value}"]
+    return entries
+
+
+def martensite(coolest):
+    """Koistinen-Marburger fraction after cooling to the temperature coolest (b = 0.011 1/K)."""
+    return 1.0 - math.exp(-0.011 * (MS - coolest)) if coolest < MS else 0.0
+
+
+def phase_block(profile):
+    """--set entries of the free 3D block with phases, its faces at the temperature profile(t),
+    the temperature uniform at every step (specific heat 1), the mechanics at T(t_n) (Coupling/
+    Iterations = 3) and a Newton tolerance of 1e-8 N (see dilatometry)."""
+    return ["Boundary conditions/Number of conditions=3", f"Thermal/Thermal expansion={ALPHA}",
+            "Thermal/Initial temperature=250", "Thermal/Specific heat=1", "Phases/Enabled=true",
+            f"Phases/Carbon content={CARBON}", "Coupling/Iterations=3", "Loading/Number of steps=10",
+            "Solver/Absolute residual tolerance=1e-8"] + faces_held_at(profile)
 
 
 def run(ausroll, prm, settings, directory, extra=(), mpi=0):
@@ -274,12 +302,10 @@ def main():
                abs(heat - exact_heat) < 1e-6 * exact_heat)
 
     if "coupling" in cases:
-        ramp = [f"Thermal/Thermal expansion={ALPHA}", "Thermal/Number of conditions=6", "Thermal/Specific heat=1",
+        ramp = [f"Thermal/Thermal expansion={ALPHA}", "Thermal/Specific heat=1",
                 "Boundary conditions/Number of conditions=4", "Boundary conditions/Condition 3/Boundary id=1",
-                "Boundary conditions/Condition 3/Components=x", "Boundary conditions/Condition 3/Value=0"]
-        for face in range(6):
-            ramp += [f"Thermal/Condition {face}/Boundary id={face}", f"Thermal/Condition {face}/Type=temperature",
-                     f"Thermal/Condition {face}/Value=20 + 80 * t"]
+                "Boundary conditions/Condition 3/Components=x",
+                "Boundary conditions/Condition 3/Value=0"] + faces_held_at("20 + 80 * t")
         for iterations, lag in ((1, 1), (3, 0)):
             directory = f"coupling_{iterations}"
             result = run(ausroll, block, ramp + [f"Coupling/Iterations={iterations}",
@@ -298,16 +324,8 @@ def main():
                 checks("coupling: two heat solves per step (the second changes nothing)", solves == 2 * (len(rows) - 1))
 
     if "dilatometry" in cases:
-        carbon = 0.8
-        ms = 539 - 423 * carbon - 30.4 * 0.55 - 17.7 * 3.25 - 12.1 * 1.2 - 7.5 * 0.12
-        dv = (4.64 - 0.53 * carbon) / 100.0
-        cool = ["Boundary conditions/Number of conditions=3", f"Thermal/Thermal expansion={ALPHA}",
-                "Thermal/Initial temperature=250", "Thermal/Number of conditions=6", "Thermal/Specific heat=1",
-                "Phases/Enabled=true", f"Phases/Carbon content={carbon}", "Coupling/Iterations=3",
-                "Loading/Number of steps=10", "Solver/Absolute residual tolerance=1e-8"]
-        for face in range(6):
-            cool += [f"Thermal/Condition {face}/Boundary id={face}", f"Thermal/Condition {face}/Type=temperature",
-                     f"Thermal/Condition {face}/Value=250 - 230 * t"]
+        dv = (4.64 - 0.53 * CARBON) / 100.0
+        cool = phase_block("250 - 230 * t")
         for kinematics in ["small strain", "finite strain"]:
             directory = "dilatometry_" + kinematics.replace(" ", "_")
             run(ausroll, block, cool + [f"Model/Kinematics={kinematics}"], directory)
@@ -315,7 +333,7 @@ def main():
             worst, worst_f, f_end = 0.0, 0.0, 0.0
             for row in rows[1:]:
                 T = 250.0 - 230.0 * float(row["time"])
-                f = 1.0 - math.exp(-0.011 * (ms - T)) if T < ms else 0.0
+                f = martensite(T)
                 theta_tr = (1.0 + f * dv) ** (1.0 / 3.0)
                 if kinematics == "finite strain":
                     stretch = (1.0 + ALPHA * (T - 20.0)) * theta_tr - 1.0
@@ -327,7 +345,7 @@ def main():
                     worst_f = max(worst_f, abs(float(row[column]) - f))
                 f_end = f
             reactions = max(abs(float(rows[-1][f"reaction_{b}_{c}"])) for b in (1, 3) for c in "xyz")
-            print(f"dilatometry ({kinematics}): Ms {ms:.2f} C, final martensite {f_end:.6f}, worst corner "
+            print(f"dilatometry ({kinematics}): Ms {MS:.2f} C, final martensite {f_end:.6f}, worst corner "
                   f"deviation {worst:.2e} of 0.01 mm, worst fraction deviation {worst_f:.2e}, "
                   f"largest reaction {reactions:.2e} N")
             checks(f"dilatometry ({kinematics}): corner (theta_th theta_tr - 1) L to 1e-8 of 0.01 mm",
@@ -336,27 +354,17 @@ def main():
             checks(f"dilatometry ({kinematics}): stress-free (reactions below 1e-6 N)", reactions < 1e-6)
 
     if "reheat" in cases:
-        carbon = 0.8
-        ms = 539 - 423 * carbon - 30.4 * 0.55 - 17.7 * 3.25 - 12.1 * 1.2 - 7.5 * 0.12
-        profile = "t <= 0.5 ? 250 - 400 * t : 50 + 300 * (t - 0.5)"
-        cycle = ["Boundary conditions/Number of conditions=3", f"Thermal/Thermal expansion={ALPHA}",
-                 "Thermal/Initial temperature=250", "Thermal/Number of conditions=6", "Thermal/Specific heat=1",
-                 "Phases/Enabled=true", f"Phases/Carbon content={carbon}", "Coupling/Iterations=3",
-                 "Loading/Number of steps=10", "Solver/Absolute residual tolerance=1e-8",
-                 "Model/Kinematics=finite strain", "Checkpoint/Interval=2"]
-        for face in range(6):
-            cycle += [f"Thermal/Condition {face}/Boundary id={face}", f"Thermal/Condition {face}/Type=temperature",
-                      f"Thermal/Condition {face}/Value={profile}"]
+        cycle = phase_block("t <= 0.5 ? 250 - 400 * t : 50 + 300 * (t - 0.5)") + [
+            "Model/Kinematics=finite strain", "Checkpoint/Interval=2"]
         run(ausroll, block, cycle, "reheat_whole")
         rows = history("reheat_whole")
         coolest, worst_f = 250.0, 0.0
         for row in rows[1:]:
             t = float(row["time"])
             coolest = min(coolest, 250.0 - 400.0 * t if t <= 0.5 else 50.0 + 300.0 * (t - 0.5))
-            f = 1.0 - math.exp(-0.011 * (ms - coolest)) if coolest < ms else 0.0
-            worst_f = max(worst_f, abs(float(row["martensite_mean"]) - f))
+            worst_f = max(worst_f, abs(float(row["martensite_mean"]) - martensite(coolest)))
         print(f"reheat: fraction at the end {float(rows[-1]['martensite_mean']):.6f} (at 50 C "
-              f"{1.0 - math.exp(-0.011 * (ms - 50.0)):.6f}), worst deviation {worst_f:.2e}")
+              f"{martensite(50.0):.6f}), worst deviation {worst_f:.2e}")
         checks("reheat: the fraction keeps its largest value while heating (1e-8)", worst_f < 1e-8)
         shutil.rmtree("reheat_resumed", ignore_errors=True)
         first = run(ausroll, block, cycle + ["Checkpoint/Abort after step=7"], "reheat_resumed")

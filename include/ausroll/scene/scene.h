@@ -140,10 +140,11 @@ namespace ausroll::scene
     /** Build the temperature field on the mechanical mesh and quadrature (after
         MechanicalSystem::setup_system()). */
     void setup_thermal();
-    /** Temperature at t = 0 on the field and the material points (not when resuming); with
-        `Phases/Enabled` also the carbon content of the points (all austenite). */
+    /** Temperature at t = 0 on the field and the material points (not when resuming). */
     void initialize_temperature();
-    /** `Phases/Carbon content` at the material points (InputError outside 0 to 2.1 wt%). */
+    /** `Phases/Carbon content` at the material points, all austenite (InputError outside 0 to
+        2.1 wt%); at set-up (before anything is written) and again after the initial refinement
+        cycles (not when resuming: the checkpoint holds it). */
     void initialize_carbon();
     /** Isothermal split, thermal half: the heat equation over the converged mechanical @p step
         (before the material points are committed), then the new temperature at the points. */
