@@ -163,6 +163,7 @@ namespace ausroll::scene
 
   template void                 Scene<2>::setup_thermal();
   template void                 Scene<2>::initialize_temperature();
+  template void                 Scene<2>::initialize_carbon();
   template void                 Scene<2>::thermal_step(const solver::LoadStep &);
   template solver::NewtonResult Scene<2>::iterate_coupling(const solver::NewtonResult &);
   template void                 Scene<2>::restore_temperature();
@@ -170,5 +171,6 @@ namespace ausroll::scene
   template void                 Scene<3>::restore_temperature();
   template void                 Scene<3>::setup_thermal();
   template void                 Scene<3>::initialize_temperature();
+  template void                 Scene<3>::initialize_carbon();
   template void                 Scene<3>::thermal_step(const solver::LoadStep &);
 } // namespace ausroll::scene
