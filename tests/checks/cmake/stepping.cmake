@@ -58,3 +58,10 @@ ausroll_add_script_check(NAME head_forming SCRIPT ${AUSROLL_CHECKS_DIR}/check_he
 # as an ellipse a = b = R equals the circle die to 1e-10 (measured 3.8e-13); an oval roll
 # (b = 0.98 a) runs to the end pressing the ring. About 2 s.
 ausroll_add_script_check(NAME ellipse_die SCRIPT ${AUSROLL_CHECKS_DIR}/check_ellipse_die.py)
+
+# Newton economy (issue 38): linear solves per load step (discarded attempts included) and
+# assemblies per linear solve on a short flagship gear (prm/gear_rolling.prm to t = 0.3) and the
+# punch on its coarsest mesh, each against a count bound from the side-by-side measurement of
+# doc/studies/newton_economy.md (the measured figures plus about 10 %), with the answer of each
+# within its error bar so that a cheaper run computing something else fails. About 15 s of CPU.
+ausroll_add_script_check(NAME solve_counts SCRIPT ${AUSROLL_CHECKS_DIR}/check_solve_counts.py)
