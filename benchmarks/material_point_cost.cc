@@ -143,7 +143,7 @@ int main(int argc, char **argv)
       const long   allocations = n_allocations - allocations_before;
       std::printf("%-20s %-6s %14.0f %14.0f %14.0f %14.0f %12ld\n",
                   to_string(kin).c_str(),
-                  mat->kinematic_hardening_modulus > 0. ? "> 0" : "0",
+                  mat->kinematic_hardening_modulus.value(0.) > 0. ? "> 0" : "0",
                   t_elastic_tangent,
                   t_plastic_tangent,
                   t_elastic,

@@ -32,13 +32,22 @@ namespace ausroll::contact
   FrictionContext friction_context(const material::MaterialParameters &material)
   {
     FrictionContext context;
-    if (material.yield_criterion != material::YieldCriterion::none)
-      context.shear_yield_stress = material.yield_stress / std::sqrt(3.);
+    if (material.yield_criterion == material::YieldCriterion::none)
+      return context;
+    if (material.yield_stress.is_constant())
+      context.shear_yield_stress = material.yield_stress.value(0.) / std::sqrt(3.);
+    else
+      context.yield_stress_depends_on_temperature = true;
     return context;
   }
 
   double required_shear_yield_stress(const FrictionContext &context, const std::string &die_path)
   {
+    require(!context.yield_stress_depends_on_temperature,
+            die_path + "Friction",
+            "the shear friction laws take k = sigma_0 / sqrt(3) of a constant yield stress, but "
+            "Material/Yield stress is a table in temperature: use Coulomb friction or a constant "
+            "yield stress");
     require(context.shear_yield_stress > 0.,
             die_path + "Friction",
             "the shear friction laws need the shear yield stress k = sigma_0 / sqrt(3) of a "

@@ -28,7 +28,8 @@ namespace ausroll::material
     SymmetricTensor<4, 3>       dlog_db;
     const SymmetricTensor<2, 3> eps_trial
         = 0.5 * logarithm(spectral, tangent != nullptr ? &dlog_db : nullptr);
-    const SymmetricTensor<2, 3> tau_trial = stress_return->elasticity().stress(eps_trial);
+    const SymmetricTensor<2, 3> tau_trial
+        = stress_return->elasticity(old.temperature).stress(eps_trial);
 
     // back stress carried along with the rotation of the increment f = F F_n^-1 = dR dU
     const bool            rotate_back_stress = old.back_stress.norm() > 0.;
@@ -41,8 +42,8 @@ namespace ausroll::material
       back_trial = rotate(dR, old.back_stress);
     }
 
-    const ReturnMappingResult r
-        = stress_return->return_map(tau_trial, back_trial, old.equivalent_plastic_strain);
+    const ReturnMappingResult r = stress_return->return_map(
+        tau_trial, back_trial, old.equivalent_plastic_strain, old.temperature);
     const SymmetricTensor<2, 3> &tau = r.stress;
 
     const double       J = dealii::determinant(F);
@@ -89,7 +90,7 @@ namespace ausroll::material
         trU_minus_U[i][i] += dealii::trace(dU);
       spin_map = dR * dealii::invert(trU_minus_U);
       back_trial_full = back_trial;
-      back_sensitivity = stress_return->back_stress_sensitivity(r);
+      back_sensitivity = stress_return->back_stress_sensitivity(r, old.temperature);
     }
 
     for (unsigned int k = 0; k < 3; ++k)
@@ -128,14 +129,16 @@ namespace ausroll::material
   {
     const double J = dealii::determinant(state.deformation_gradient);
     return stress_return->yield_function(
-        J * state.stress, state.back_stress, state.equivalent_plastic_strain);
+        J * state.stress, state.back_stress, state.equivalent_plastic_strain, state.temperature);
   }
 
   void FiniteStrainLogModel::make_admissible(MaterialState &state) const
   {
     const double J = dealii::determinant(state.deformation_gradient);
-    state.stress = stress_return->project_onto_yield_surface(
-                       J * state.stress, state.back_stress, state.equivalent_plastic_strain)
+    state.stress = stress_return->project_onto_yield_surface(J * state.stress,
+                                                             state.back_stress,
+                                                             state.equivalent_plastic_strain,
+                                                             state.temperature)
                    / J;
   }
 } // namespace ausroll::material

@@ -4,12 +4,12 @@
 
 namespace ausroll::material
 {
-  HardeningLaw::HardeningLaw(const MaterialParameters &parameters)
+  HardeningLaw::HardeningLaw(const MaterialParameters &parameters, const double temperature)
       : type(parameters.hardening_law)
-      , sigma_0(parameters.yield_stress)
-      , modulus(parameters.hardening_modulus)
-      , eps_0(parameters.reference_plastic_strain)
-      , exponent(parameters.hardening_exponent)
+      , sigma_0(parameters.yield_stress.value(temperature))
+      , modulus(parameters.hardening_modulus.value(temperature))
+      , eps_0(parameters.reference_plastic_strain.value(temperature))
+      , exponent(parameters.hardening_exponent.value(temperature))
   {
   }
 

@@ -40,6 +40,7 @@ namespace ausroll::material
     data.push_back(plastic_work);
     data.push_back(martensite);
     data.push_back(carbon);
+    data.push_back(bainite);
   }
 
   void MaterialState::unpack(const double *data)
@@ -55,7 +56,8 @@ namespace ausroll::material
     temperature = *data++;
     plastic_work = *data++;
     martensite = *data++;
-    carbon = *data;
+    carbon = *data++;
+    bainite = *data;
   }
 
   double MaterialState::von_mises_stress() const

@@ -67,17 +67,43 @@ namespace ausroll::material
                       "Volume change austenite to martensite in per cent, an expression of C "
                       "(default the dilatometric relation of the ASM Handbook vol. 4, Heat "
                       "Treating: 4.64 - 0.53 C).");
+    prm.declare_entry("Bainite start times",
+                      "",
+                      Patterns::Anything(),
+                      "Bainite from the TTT diagram: the times t_s(T) (s) at which 1 % of the "
+                      "austenite has transformed in an isothermal hold, as a table 'T1: t1, T2: "
+                      "t2, ...' (or 'file: NAME.csv') over the bainite range (between Ms and the "
+                      "bainite start temperature; nothing forms outside the rows). Empty: no "
+                      "bainite. JMAK through (t_s, 1 %) and (t_f, 99 %), the additivity rule for "
+                      "changing temperatures.");
+    prm.declare_entry("Bainite finish times",
+                      "",
+                      Patterns::Anything(),
+                      "The times t_f(T) (s) of 99 % bainite, at the temperatures of the start "
+                      "times, each later than its start time.");
+    prm.declare_entry("Bainite volume change",
+                      defaults.bainite_volume_change,
+                      Patterns::Anything(),
+                      "Volume change austenite to bainite in per cent, an expression of C "
+                      "(default lower bainite, 4.64 - 1.43 C; upper bainite 4.64 - 2.21 C: the "
+                      "dilatometric relations of the ASM Handbook vol. 4, after Lement 1959).");
     prm.leave_subsection();
   }
 
-  void PhaseParameters::parse_parameters(ParameterHandler &prm, const bool thermal)
+  void PhaseParameters::parse_parameters(ParameterHandler  &prm,
+                                         const bool         thermal,
+                                         const std::string &directory)
   {
+    input_directory = directory;
     prm.enter_subsection("Phases");
     enabled = prm.get_bool("Enabled");
     carbon_content = prm.get("Carbon content");
     martensite_start = prm.get("Martensite start temperature");
     koistinen_marburger = prm.get_double("Koistinen-Marburger coefficient");
     volume_change = prm.get("Transformation volume change");
+    bainite_start = prm.get("Bainite start times");
+    bainite_finish = prm.get("Bainite finish times");
+    bainite_volume_change = prm.get("Bainite volume change");
     prm.leave_subsection();
     require(!enabled || thermal,
             "Phases/Enabled",
@@ -87,6 +113,13 @@ namespace ausroll::material
       carbon_function(martensite_start, "Phases/Martensite start temperature");
       carbon_function(volume_change, "Phases/Transformation volume change");
       require_expression_length(carbon_content, "Phases/Carbon content");
+      const BainiteKinetics check(bainite_start,
+                                  bainite_finish,
+                                  "Phases/Bainite start times",
+                                  "Phases/Bainite finish times",
+                                  input_directory);
+      if (check.active())
+        carbon_function(bainite_volume_change, "Phases/Bainite volume change");
     }
   }
 
@@ -96,7 +129,14 @@ namespace ausroll::material
       , b(prm.koistinen_marburger)
       , ms(carbon_function(prm.martensite_start, "Phases/Martensite start temperature"))
       , dv(carbon_function(prm.volume_change, "Phases/Transformation volume change"))
+      , bainite(prm.bainite_start,
+                prm.bainite_finish,
+                "Phases/Bainite start times",
+                "Phases/Bainite finish times",
+                prm.input_directory)
   {
+    if (bainite.active())
+      dv_bainite = carbon_function(prm.bainite_volume_change, "Phases/Bainite volume change");
   }
 
   double PhaseTransformationModel::martensite_start(const double C) const
@@ -106,16 +146,34 @@ namespace ausroll::material
 
   double PhaseTransformationModel::martensite_fraction(const double f_old,
                                                        const double C,
-                                                       const double T) const
+                                                       const double T,
+                                                       const double bainite_fraction) const
   {
     const double Ms = martensite_start(C);
     if (T >= Ms)
       return f_old;
-    return std::max(f_old, 1. - std::exp(-b * (Ms - T)));
+    return std::max(f_old, (1. - bainite_fraction) * (1. - std::exp(-b * (Ms - T))));
   }
 
-  double PhaseTransformationModel::transformation_stretch(const double f, const double C) const
+  double PhaseTransformationModel::bainite_fraction(const double f_old,
+                                                    const double martensite,
+                                                    const double T,
+                                                    const double dt) const
   {
+    const double available = 1. - martensite; // austenite and bainite
+    if (!bainite.in_range(T) || !(available > 0.))
+      return f_old;
+    const double xi = bainite.advance(std::min(1., f_old / available), T, dt);
+    return std::max(f_old, xi * available);
+  }
+
+  double PhaseTransformationModel::transformation_stretch(const double f,
+                                                          const double C,
+                                                          const double f_b) const
+  {
+    if (f_b > 0.)
+      return std::cbrt(1. + f * dv->value(Point<1>(C)) / 100.
+                       + f_b * dv_bainite->value(Point<1>(C)) / 100.);
     return f > 0. ? std::cbrt(1. + f * dv->value(Point<1>(C)) / 100.) : 1.;
   }
 
@@ -125,16 +183,20 @@ namespace ausroll::material
                                           Tensor<2, 3>        &P,
                                           Tensor<4, 3>        *tangent) const
   {
-    const double f = martensite_fraction(old.martensite, old.carbon, old.temperature);
-    const double theta = transformation_stretch(f, old.carbon);
+    const double f_b = bainite_fraction(old.bainite, old.martensite, old.temperature, step_length);
+    const double f = martensite_fraction(old.martensite, old.carbon, old.temperature, f_b);
+    const double theta = transformation_stretch(f, old.carbon, f_b);
     inner->evaluate(remove_stretch(F, theta), old, state, P, tangent);
     scale_response(P, tangent, theta);
     state.martensite = f;
+    state.bainite = f_b;
     state.carbon = old.carbon;
   }
 
   void PhaseTransformationModel::rebase(MaterialState &state, const Tensor<2, 3> &F) const
   {
-    inner->rebase(state, remove_stretch(F, transformation_stretch(state.martensite, state.carbon)));
+    inner->rebase(
+        state,
+        remove_stretch(F, transformation_stretch(state.martensite, state.carbon, state.bainite)));
   }
 } // namespace ausroll::material

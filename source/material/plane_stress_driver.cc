@@ -24,7 +24,7 @@ namespace ausroll::material
     F[2][2] = old.deformation_gradient[2][2];
 
     Tensor<4, 3> A;
-    const double scale = inner->plasticity().elasticity().youngs_modulus;
+    const double scale = inner->plasticity().elasticity(old.temperature).youngs_modulus;
     for (unsigned int it = 0;; ++it)
     {
       inner->evaluate(F, old, state, P, &A);

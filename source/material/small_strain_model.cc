@@ -18,9 +18,9 @@ namespace ausroll::material
   {
     const SymmetricTensor<2, 3> strain = dealii::symmetrize(F) - dealii::unit_symmetric_tensor<3>();
     const SymmetricTensor<2, 3> trial_stress
-        = stress_return->elasticity().stress(strain - old.plastic_strain);
-    const ReturnMappingResult r
-        = stress_return->return_map(trial_stress, old.back_stress, old.equivalent_plastic_strain);
+        = stress_return->elasticity(old.temperature).stress(strain - old.plastic_strain);
+    const ReturnMappingResult r = stress_return->return_map(
+        trial_stress, old.back_stress, old.equivalent_plastic_strain, old.temperature);
 
     state.stress = r.stress;
     state.plastic_strain = old.plastic_strain + r.plastic_strain_increment;
@@ -41,7 +41,7 @@ namespace ausroll::material
   void SmallStrainModel::rebase(MaterialState &state, const Tensor<2, 3> &F) const
   {
     state.plastic_strain = dealii::symmetrize(F) - dealii::unit_symmetric_tensor<3>()
-                           - stress_return->elasticity().strain(state.stress);
+                           - stress_return->elasticity(state.temperature).strain(state.stress);
     state.deformation_gradient = F;
   }
 } // namespace ausroll::material

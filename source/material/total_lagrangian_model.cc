@@ -28,9 +28,9 @@ namespace ausroll::material
       }
 
     const SymmetricTensor<2, 3> trial_stress
-        = stress_return->elasticity().stress(E - old.plastic_strain);
-    const ReturnMappingResult r
-        = stress_return->return_map(trial_stress, old.back_stress, old.equivalent_plastic_strain);
+        = stress_return->elasticity(old.temperature).stress(E - old.plastic_strain);
+    const ReturnMappingResult r = stress_return->return_map(
+        trial_stress, old.back_stress, old.equivalent_plastic_strain, old.temperature);
     const SymmetricTensor<2, 3> &S = r.stress;
 
     P = F * Tensor<2, 3>(S);
@@ -86,7 +86,7 @@ namespace ausroll::material
         dealii::determinant(F) * F_inv * Tensor<2, 3>(state.stress) * dealii::transpose(F_inv));
     const SymmetricTensor<2, 3> E
         = 0.5 * (dealii::symmetrize(dealii::transpose(F) * F) - dealii::unit_symmetric_tensor<3>());
-    state.plastic_strain = E - stress_return->elasticity().strain(S);
+    state.plastic_strain = E - stress_return->elasticity(state.temperature).strain(S);
     state.deformation_gradient = F;
   }
 
@@ -96,7 +96,8 @@ namespace ausroll::material
     const Tensor<2, 3>          F_inv = dealii::invert(F);
     const SymmetricTensor<2, 3> S = dealii::symmetrize(
         dealii::determinant(F) * F_inv * Tensor<2, 3>(state.stress) * dealii::transpose(F_inv));
-    return stress_return->yield_function(S, state.back_stress, state.equivalent_plastic_strain);
+    return stress_return->yield_function(
+        S, state.back_stress, state.equivalent_plastic_strain, state.temperature);
   }
 
   void TotalLagrangianModel::make_admissible(MaterialState &state) const
@@ -107,7 +108,7 @@ namespace ausroll::material
     const SymmetricTensor<2, 3> S
         = dealii::symmetrize(J * F_inv * Tensor<2, 3>(state.stress) * dealii::transpose(F_inv));
     const SymmetricTensor<2, 3> S_admissible = stress_return->project_onto_yield_surface(
-        S, state.back_stress, state.equivalent_plastic_strain);
+        S, state.back_stress, state.equivalent_plastic_strain, state.temperature);
     state.stress = dealii::symmetrize(F * Tensor<2, 3>(S_admissible) * dealii::transpose(F)) / J;
   }
 } // namespace ausroll::material

@@ -34,11 +34,11 @@ namespace ausroll::material
     const Tensor<2, 3> Q_half = M_half * (I + 0.25 * dW);
 
     const SymmetricTensor<2, 3> d_eps = dealii::symmetrize(dL);
-    const SymmetricTensor<2, 3> d_stress = stress_return->elasticity().stress(d_eps);
+    const SymmetricTensor<2, 3> d_stress = stress_return->elasticity(old.temperature).stress(d_eps);
     const SymmetricTensor<2, 3> trial_stress = rotate(Q, old.stress) + rotate(Q_half, d_stress);
     const SymmetricTensor<2, 3> trial_back_stress = rotate(Q, old.back_stress);
-    const ReturnMappingResult   r
-        = stress_return->return_map(trial_stress, trial_back_stress, old.equivalent_plastic_strain);
+    const ReturnMappingResult   r = stress_return->return_map(
+        trial_stress, trial_back_stress, old.equivalent_plastic_strain, old.temperature);
 
     state.stress = r.stress;
     state.plastic_strain = rotate(Q, old.plastic_strain) + r.plastic_strain_increment;
@@ -60,11 +60,11 @@ namespace ausroll::material
     // / 2 and dQ = M d Delta W (Q + I) / 2, so for a symmetric X with V = (Q + I) X Q^T d(Q X Q^T)
     // = dQ X Q^T + (..)^T = 2 sym[(M a) (x) (V^T b) - (M b) (x) (V^T a)] / 4, a sum of rank-one
     // terms built from vectors precomputed per k and per L.
-    const IsotropicElasticity &elastic = stress_return->elasticity();
-    const Tensor<2, 3>         a_vectors = dealii::transpose(I - 0.5 * dL); // row k = a_k
-    const Tensor<2, 3>        &b_vectors = F_mid_inv;                       // row L = b_L
-    const Tensor<2, 3>         Q_plus_I = Q + I;
-    const Tensor<2, 3>         Vt_stress
+    const IsotropicElasticity elastic = stress_return->elasticity(old.temperature);
+    const Tensor<2, 3>        a_vectors = dealii::transpose(I - 0.5 * dL); // row k = a_k
+    const Tensor<2, 3>       &b_vectors = F_mid_inv;                       // row L = b_L
+    const Tensor<2, 3>        Q_plus_I = Q + I;
+    const Tensor<2, 3>        Vt_stress
         = dealii::transpose(Q_plus_I * Tensor<2, 3>(old.stress) * dealii::transpose(Q));
     // the same for the rotated strain-increment stress C : Delta eps, whose rotation is
     // Q_half (..) Q_half^T with d Q_half = M_half d Delta W (Q_half + I) / 4 (half the rate)
@@ -76,7 +76,8 @@ namespace ausroll::material
               ? dealii::transpose(Q_plus_I * Tensor<2, 3>(old.back_stress) * dealii::transpose(Q))
               : Tensor<2, 3>();
     const SymmetricTensor<4, 3> back_sensitivity
-        = rotate_back_stress ? stress_return->back_stress_sensitivity(r) : SymmetricTensor<4, 3>();
+        = rotate_back_stress ? stress_return->back_stress_sensitivity(r, old.temperature)
+                             : SymmetricTensor<4, 3>();
 
     Tensor<1, 3> Ma[3], Mb[3], Va[3], Vb[3], Wa[3], Wb[3]; // M a, M b, V^T a, V^T b (stress, back)
     Tensor<1, 3> Ha[3], Hb[3], Za[3], Zb[3]; // M_half a, M_half b, V_inc^T a, V_inc^T b

@@ -83,6 +83,7 @@ namespace ausroll::scene
           highest = std::max(highest, C);
           states[q]->committed.carbon = states[q]->trial.carbon = C;
           states[q]->committed.martensite = states[q]->trial.martensite = 0.;
+          states[q]->committed.bainite = states[q]->trial.bainite = 0.;
         }
       }
     // collective, so that every rank stops with the same message

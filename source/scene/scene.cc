@@ -145,17 +145,19 @@ namespace ausroll::scene
   {
     if (!postprocessors)
     {
-      postprocessors = io::make_standard_postprocessors<dim>(parameters.output,
-                                                             parameters.postprocess,
-                                                             parameters.loading.end_time,
-                                                             parameters.material.yield_stress,
-                                                             parameters.model.quadrature_points,
-                                                             comm,
-                                                             thermal != nullptr);
+      postprocessors
+          = io::make_standard_postprocessors<dim>(parameters.output,
+                                                  parameters.postprocess,
+                                                  parameters.loading.end_time,
+                                                  parameters.material.yield_stress.min_value(),
+                                                  parameters.model.quadrature_points,
+                                                  comm,
+                                                  thermal != nullptr);
       if (thermal) // its columns after the mechanical ones
         postprocessors->add(std::make_unique<io::postprocess::TemperatureField<dim>>());
       if (parameters.phases.enabled)
-        postprocessors->add(std::make_unique<io::postprocess::PhaseFractions<dim>>());
+        postprocessors->add(std::make_unique<io::postprocess::PhaseFractions<dim>>(
+            parameters.phases.has_bainite()));
     }
     postprocessors->initialize(postprocess_input());
   }
@@ -230,6 +232,7 @@ namespace ausroll::scene
   void Scene<dim>::commit_step(const bool new_step)
   {
     system.commit_step(new_step);
+    model->set_step_length(0.); // until the next step: no kinetics in re-equilibration, output
     if (thermal)
       thermal->commit();
     contact.commit(new_step);

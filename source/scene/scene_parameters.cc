@@ -36,7 +36,7 @@ namespace ausroll::scene
     name = prm.get("Scene name");
     geometry.parse_parameters(prm, input_directory);
     model.parse_parameters(prm);
-    material.parse_parameters(prm);
+    material.parse_parameters(prm, input_directory);
     boundary_conditions.parse_parameters(prm);
     contact.parse_parameters(prm, input_directory);
     adaptivity.parse_parameters(prm);
@@ -47,7 +47,12 @@ namespace ausroll::scene
     postprocess.parse_parameters(prm);
     thermal.parse_parameters(prm, input_directory);
     coupling.parse_parameters(prm, thermal.enabled);
-    phases.parse_parameters(prm, thermal.enabled);
+    phases.parse_parameters(prm, thermal.enabled, input_directory);
+    const std::string table_entry = material.first_temperature_dependent_entry();
+    require(table_entry.empty() || thermal.enabled,
+            table_entry,
+            "a table in temperature needs the temperature field: set Thermal/Enabled = true (or "
+            "give a single value)");
   }
 
   SceneParameters read_parameter_file(const std::string                    &filename,

@@ -64,6 +64,28 @@ reheat       the dilatometry block cooled to 50 C (T = 250 - 400 t up to t = 0.5
              fraction and the carbon content travel in the checkpoint); on 2 MPI ranks every
              column within 1e-8 of the serial run (of the column's largest magnitude, at least
              0.1: the reactions of the free block are round-off, below 1e-5 N).
+softening    temperature-dependent moduli and yield stress (Material entries as tables in T): the
+             block of clamped (x held at 0 and 10, free laterally), all faces at T = 20 + 500 t
+             (specific heat 1 and no plastic heating: uniform), Coupling/Iterations = 3 (the
+             mechanics at T(t_n)),
+             E = 20: 210000, 300: 190000, 600: 150000; nu = 20: 0.3, 600: 0.35;
+             sigma_0 = 20: 240, 600: 120; perfectly plastic, 20 steps to 520 C. Uniaxial stress:
+             small strain sigma_xx = -min(E(T) alpha dT, sigma_0(T)) (the secant law: while
+             elastic E(T) alpha dT, once yielded the yield stress at T, the thermal strain still
+             growing), the lateral corner displacement 5 ((1 + nu(T)) alpha dT) while elastic and
+             5 (1.5 alpha dT - (0.5 - nu(T)) sigma_0(T) / E(T)) once plastic (eps_xx = 0 gives
+             eps_p,xx = -alpha dT - sigma_xx / E(T), deviatoric flow); finite strain (logarithmic
+             elastic strain, Kirchhoff yield): reaction theta^3 A min(E(T) ln theta, sigma_0(T)),
+             theta = 1 + alpha dT. Three elastic steps, seventeen plastic; 1e-8 of sigma_0 A and
+             of the lateral strain (the history's 10 digits; measured 2026-12-07: 8.6e-10).
+bainite      the dilatometry block (carbon 0.8 wt%, Ms 110.9 C) held at 300 C for 120 s and then
+             quenched to 20 C (8 steps of 30 s), with the TTT rows 250 C: 20 / 400 s and 350 C: 10 /
+             200 s (start / finish; 15 / 300 s at 300 C): during the hold the bainite fraction is
+             JMAK's 1 - exp(-k t^n) through (15 s, 1 %) and (300 s, 99 %) (the additivity rule is
+             exact for a hold); after the quench the bainite stays and martensite forms from the
+             austenite left, (1 - f_B) (1 - exp(-b (Ms - 20))); the corner moves by
+             (theta_th (1 + f_M dV_M/V + f_B dV_B/V)^(1/3) - 1) L (finite strain; dV_B/V = 4.64 -
+             1.43 C per cent), both to 1e-8 as dilatometry.
 resume       the conduction run interrupted after step 25 (checkpoints every 10 steps) and resumed
              gives the same history as the uninterrupted run, to the last digit.
 
@@ -174,7 +196,7 @@ def main():
     ausroll, source = sys.argv[1], sys.argv[2]
     cases = sys.argv[3:] or ["conduction", "adiabatic", "free", "clamped", "plane_strain",
                              "cylinder", "coupling", "dilatometry", "reheat", "conductance", "friction",
-                             "np2", "resume"]
+                             "softening", "bainite", "np2", "resume"]
     scenes = os.path.join(source, "tests", "checks", "scenes")
     strip = os.path.join(scenes, "thermal_conduction.prm")
     block = os.path.join(scenes, "thermal_block_3d.prm")
@@ -246,6 +268,49 @@ def main():
         checks("clamped: lateral expansion (1 + nu) alpha dT to 1e-6",
                abs(row["corner_uy"] - lateral * 5) < 1e-6 * lateral * 5
                and abs(row["corner_uz"] - lateral * 4) < 1e-6 * lateral * 4)
+
+    if "softening" in cases:
+        tables = {"Young's modulus": [(20, 210000.0), (300, 190000.0), (600, 150000.0)],
+                  "Poisson's ratio": [(20, 0.3), (600, 0.35)], "Yield stress": [(20, 240.0), (600, 120.0)]}
+
+        def at(name, t):
+            rows = tables[name]
+            for (t0, v0), (t1, v1) in zip(rows, rows[1:]):
+                if t <= t1:
+                    return v0 + (v1 - v0) * (t - t0) / (t1 - t0)
+            return rows[-1][1]
+
+        settings = [f"Thermal/Thermal expansion={ALPHA}", "Thermal/Specific heat=1", "Coupling/Iterations=3",
+                    "Loading/Number of steps=20", "Material/Hardening modulus=0",
+                    "Thermal/Taylor-Quinney coefficient=0",
+                    "Boundary conditions/Condition 3/Boundary id=1",
+                    "Boundary conditions/Condition 3/Components=x",
+                    "Boundary conditions/Condition 3/Value=0"] + faces_held_at("20+500*t")
+        settings += [f"Material/{name}=" + ", ".join(f"{t}: {v}" for t, v in rows) for name, rows in tables.items()]
+        for kinematics in ["small strain", "finite strain"]:
+            directory = "softening_" + kinematics.replace(" ", "_")
+            run(ausroll, block, settings + [f"Model/Kinematics={kinematics}"], directory)
+            worst, elastic, plastic = 0.0, 0, 0
+            for row in history(directory)[1:]:
+                t = float(row["T_mean"])
+                e, nu, s0 = at("Young's modulus", t), at("Poisson's ratio", t), at("Yield stress", t)
+                strain = ALPHA * (t - 20.0)
+                if kinematics == "small strain":
+                    yielded = e * strain > s0
+                    stress = s0 if yielded else e * strain
+                    force = stress * 20.0
+                    uy = 5.0 * ((1.5 * strain - (0.5 - nu) * s0 / e) if yielded else (1 + nu) * strain)
+                    worst = max(worst, abs(float(row["corner_uy"]) - uy) / (5.0 * strain))
+                else:
+                    theta = 1.0 + strain
+                    yielded = e * math.log(theta) > s0
+                    force = theta ** 3 * 20.0 * min(e * math.log(theta), s0)
+                elastic, plastic = elastic + (not yielded), plastic + yielded
+                worst = max(worst, abs(abs(float(row["reaction_1_x"])) - force) / (240.0 * 20.0))
+            print(f"softening ({kinematics}): {elastic} elastic and {plastic} plastic steps up to "
+                  f"{t:.1f} C, worst relative deviation {worst:.2e}")
+            checks(f"softening ({kinematics}): reaction (and lateral strain) at E(T), nu(T), sigma_0(T) to 1e-8",
+                   worst < 1e-8 and elastic >= 3 and plastic >= 15)
 
     if "plane_strain" in cases:
         run(ausroll, strip, ["Thermal/Initial temperature=120", f"Thermal/Thermal expansion={ALPHA}",
@@ -352,6 +417,30 @@ def main():
                    worst < 1e-8 and f_end > 0.5)
             checks(f"dilatometry ({kinematics}): Koistinen-Marburger fraction to 1e-8", worst_f < 1e-8)
             checks(f"dilatometry ({kinematics}): stress-free (reactions below 1e-6 N)", reactions < 1e-6)
+
+    if "bainite" in cases:
+        n = math.log(math.log(0.01) / math.log(0.99)) / math.log(300.0 / 15.0)
+        k = -math.log(0.99) / 15.0 ** n
+        dv_m, dv_b = (4.64 - 0.53 * CARBON) / 100.0, (4.64 - 1.43 * CARBON) / 100.0
+        run(ausroll, block, phase_block("t <= 120 ? 300 : 20") + [
+            "Thermal/Initial temperature=300", "Loading/End time=240", "Loading/Number of steps=8",
+            "Model/Kinematics=finite strain", "Phases/Bainite start times=250: 20, 350: 10",
+            "Phases/Bainite finish times=250: 400, 350: 200"], "bainite")
+        worst, worst_f = 0.0, 0.0
+        for row in history("bainite")[1:]:
+            t = float(row["time"])
+            f_b = 1.0 - math.exp(-k * min(t, 120.0) ** n)
+            T = 300.0 if t <= 120.0 else 20.0
+            f_m = (1.0 - f_b) * martensite(T)
+            stretch = (1.0 + ALPHA * (T - 20.0)) * (1.0 + f_m * dv_m + f_b * dv_b) ** (1.0 / 3.0) - 1.0
+            for c, length in (("x", 10.0), ("y", 5.0), ("z", 4.0)):
+                worst = max(worst, abs(float(row[f"corner_u{c}"]) - stretch * length) / 0.01)
+            worst_f = max(worst_f, abs(float(row["bainite_mean"]) - f_b), abs(float(row["martensite_mean"]) - f_m))
+        print(f"bainite: at the quench {f_b:.6f} bainite, at 20 C {f_m:.6f} martensite; worst corner deviation "
+              f"{worst:.2e} of 0.01 mm, worst fraction deviation {worst_f:.2e}")
+        checks("bainite: JMAK fraction in the hold, martensite from the austenite left, to 1e-8",
+               worst_f < 1e-8 and 0.2 < f_b < 0.9 and f_m > 0.1)
+        checks("bainite: corner (theta_th theta_tr - 1) L to 1e-8 of 0.01 mm", worst < 1e-8)
 
     if "reheat" in cases:
         cycle = phase_block("t <= 0.5 ? 250 - 400 * t : 50 + 300 * (t - 0.5)") + [

@@ -220,7 +220,7 @@ namespace
     TrilinosWrappers::MPI::Vector  du = problem.vector();
     solver::LinearSolver<3>        linear_solver(solver::LinearSolverParameters{});
 
-    const double force_scale = mat.youngs_modulus * delta; // stress x unit area
+    const double force_scale = mat.youngs_modulus.value(0.) * delta; // stress x unit area
     for (unsigned int step = 1; step <= n_steps; ++step)
     {
       bool converged = false;
@@ -291,8 +291,9 @@ TEST(Dim3, UniaxialCompressionNewtonSolveMatchesAnalyticSolution)
     for (unsigned int i = 0; i < r.u.size(); ++i)
     {
       const Point<3> &x = r.support.at(i);
-      const double    exact
-          = r.component[i] < 2 ? mat.poissons_ratio * delta * x[r.component[i]] : -delta * x[2];
+      const double    exact = r.component[i] < 2
+                                  ? mat.poissons_ratio.value(0.) * delta * x[r.component[i]]
+                                  : -delta * x[2];
       error = std::max(error, std::abs(r.u[i] - exact));
     }
     std::printf("[ dim3 ] uniaxial elastic: max |u - u_exact| / delta = %.1e\n", error / delta);
@@ -303,10 +304,11 @@ TEST(Dim3, UniaxialCompressionNewtonSolveMatchesAnalyticSolution)
     mat.yield_stress = 2.; // yield strain 0.002 < delta
     mat.hardening_modulus = 50.;
     const UniaxialResult r = uniaxial_compression(mat, delta, 2);
-    const double         E = mat.youngs_modulus, s_y = mat.yield_stress, H = mat.hardening_modulus;
-    const double         eps_p = (delta - s_y / E) / (1. + H / E);
-    const double         sigma = s_y + H * eps_p;
-    double               stress_error = 0., eps_p_error = 0.;
+    const double         E = mat.youngs_modulus.value(0.), s_y = mat.yield_stress.value(0.),
+                 H = mat.hardening_modulus.value(0.);
+    const double eps_p = (delta - s_y / E) / (1. + H / E);
+    const double sigma = s_y + H * eps_p;
+    double       stress_error = 0., eps_p_error = 0.;
     for (const auto &state : r.states)
     {
       for (unsigned int i = 0; i < 3; ++i)
@@ -315,7 +317,7 @@ TEST(Dim3, UniaxialCompressionNewtonSolveMatchesAnalyticSolution)
                                   std::abs(state.stress[i][j] - (i == 2 && j == 2 ? -sigma : 0.)));
       eps_p_error = std::max(eps_p_error, std::abs(state.equivalent_plastic_strain - eps_p));
     }
-    const double lateral = mat.poissons_ratio * sigma / E + 0.5 * eps_p;
+    const double lateral = mat.poissons_ratio.value(0.) * sigma / E + 0.5 * eps_p;
     double       u_error = 0.;
     for (unsigned int i = 0; i < r.u.size(); ++i)
     {

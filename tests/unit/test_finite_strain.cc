@@ -269,7 +269,7 @@ TEST(FiniteStrainModels, TangentsMatchFiniteDifferences)
     for (const auto &mat : {steel(1000.), steel(1000., 5000.)})
     {
       const auto    model = create_constitutive_model(kin, mat, false);
-      const char   *hk = mat.kinematic_hardening_modulus > 0. ? " (H_k > 0)" : "";
+      const char   *hk = mat.kinematic_hardening_modulus.value(0.) > 0. ? " (H_k > 0)" : "";
       MaterialState virgin;
       check((std::string("plastic, virgin, F = I") + hk).c_str(),
             tangent_error(*model, virgin, identity()));
@@ -523,7 +523,7 @@ TEST(UpdatedLagrangianJaumannModel, ElasticSimpleShearConvergesToJaumannClosedFo
   // Delta gamma = 6.3e-3, falling by 4 when the step is halved.
   const auto model
       = create_constitutive_model(KinematicsType::updated_lagrangian, elastic_steel(), false);
-  const double mu = model->plasticity().elasticity().shear_modulus;
+  const double mu = model->plasticity().elasticity(0.).shear_modulus;
   auto         max_error = [&](const int n_steps)
   {
     MaterialPoint point;

@@ -73,15 +73,16 @@ TEST(VonMises, ReturnsRadiallyOntoTheYieldSurface)
   trial[0][0] = 500.;
   trial[1][1] = 100.;
   trial[0][1] = 80.;
-  const ReturnMappingResult r = vm.return_map(trial, SymmetricTensor<2, 3>(), 0.);
+  const ReturnMappingResult r = vm.return_map(trial, SymmetricTensor<2, 3>(), 0., 0.);
   ASSERT_TRUE(r.plastic);
   // on the (hardened) yield surface, with the same pressure and deviatoric direction as the trial
-  EXPECT_NEAR(vm.yield_function(r.stress, r.back_stress, r.eq_plastic_strain_increment), 0., 1e-9);
+  EXPECT_NEAR(
+      vm.yield_function(r.stress, r.back_stress, r.eq_plastic_strain_increment, 0.), 0., 1e-9);
   EXPECT_NEAR(dealii::trace(r.stress), dealii::trace(trial), 1e-9);
   const SymmetricTensor<2, 3> s = dealii::deviator(r.stress), st = dealii::deviator(trial);
   EXPECT_NEAR((s * st) / std::sqrt((s * s) * (st * st)), 1., 1e-12);
   // closed form: dgamma = (q_trial - sigma_y) / (3 mu + H)
-  const double mu = vm.elasticity().shear_modulus;
+  const double mu = vm.elasticity(0.).shear_modulus;
   const double q = std::sqrt(1.5 * (st * st));
   EXPECT_NEAR(r.eq_plastic_strain_increment, (q - 240.) / (3. * mu + 1000.), 1e-14);
 }
@@ -114,7 +115,7 @@ TEST(VonMises, SimpleShearMatchesClosedForm)
   // tau(gamma) = G gamma before yield, (gamma + sqrt3 sy / H) / (1/G + 3/H) after.
   const double     H = 5000., sy = 240.;
   SmallStrainModel model(std::make_unique<VonMisesPlasticity>(steel(H)));
-  const double     G = model.plasticity().elasticity().shear_modulus;
+  const double     G = model.plasticity().elasticity(0.).shear_modulus;
   MaterialPoint    point;
   Tensor<2, 3>     P;
   for (double gamma = 0.0005; gamma <= 0.03; gamma += 0.0005)
@@ -140,7 +141,7 @@ TEST(VonMises, PowerLawUniaxialIsExactForProportionalLoading)
   p.reference_plastic_strain = 0.002;
   p.hardening_exponent = 0.25;
   SmallStrainModel model(std::make_unique<VonMisesPlasticity>(p));
-  const double     eps = 0.05, E = p.youngs_modulus;
+  const double     eps = 0.05, E = p.youngs_modulus.value(0.);
 
   // reference: solve sigma = s0 (1 + (eps - sigma/E)/e0)^n by bisection
   double lo = 240., hi = 2000.;

@@ -169,12 +169,12 @@ TEST(MaterialPointTransfer, ProjectionOntoYieldSurface)
   SymmetricTensor<2, 3>                       s;
   s[0][0] = 300.;
   s[1][1] = 20.;
-  const SymmetricTensor<2, 3> p = vm.project_onto_yield_surface(s, SymmetricTensor<2, 3>(), 0.);
-  EXPECT_NEAR(vm.yield_function(p, SymmetricTensor<2, 3>(), 0.), 0., 1e-10);
+  const SymmetricTensor<2, 3> p = vm.project_onto_yield_surface(s, SymmetricTensor<2, 3>(), 0., 0.);
+  EXPECT_NEAR(vm.yield_function(p, SymmetricTensor<2, 3>(), 0., 0.), 0., 1e-10);
   EXPECT_NEAR(trace(p), trace(s), 1e-12);
   SymmetricTensor<2, 3> inside;
   inside[0][0] = 100.;
-  EXPECT_EQ(vm.project_onto_yield_surface(inside, SymmetricTensor<2, 3>(), 0.), inside);
+  EXPECT_EQ(vm.project_onto_yield_surface(inside, SymmetricTensor<2, 3>(), 0., 0.), inside);
 }
 
 TEST(MaterialPointTransfer, AveragingKeepsStatesAdmissible)
@@ -187,7 +187,7 @@ TEST(MaterialPointTransfer, AveragingKeepsStatesAdmissible)
   SymmetricTensor<2, 3>                       s1, s2;
   s1[0][0] = 240. + 1000. * 0.01;  // uniaxial, on the surface for alpha = 0.01
   s2[0][1] = 240. / std::sqrt(3.); // pure shear, on the surface for alpha = 0
-  EXPECT_NEAR(vm.yield_function(s1, SymmetricTensor<2, 3>(), 0.01), 0., 1e-10);
-  EXPECT_NEAR(vm.yield_function(s2, SymmetricTensor<2, 3>(), 0.), 0., 1e-10);
-  EXPECT_LE(vm.yield_function(0.5 * (s1 + s2), SymmetricTensor<2, 3>(), 0.005), 1e-10);
+  EXPECT_NEAR(vm.yield_function(s1, SymmetricTensor<2, 3>(), 0.01, 0.), 0., 1e-10);
+  EXPECT_NEAR(vm.yield_function(s2, SymmetricTensor<2, 3>(), 0., 0.), 0., 1e-10);
+  EXPECT_LE(vm.yield_function(0.5 * (s1 + s2), SymmetricTensor<2, 3>(), 0.005, 0.), 1e-10);
 }

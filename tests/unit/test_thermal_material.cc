@@ -5,6 +5,7 @@
  * forms and finite-difference tangents.
  */
 #include <ausroll/core/exceptions.h>
+#include <ausroll/material/bainite_kinetics.h>
 #include <ausroll/material/constitutive_model.h>
 #include <ausroll/material/material_point.h>
 #include <ausroll/material/phase_transformation_model.h>
@@ -169,31 +170,41 @@ TEST(ThermalExpansionModel, ClampedBlockClosedForms)
   }
 }
 
+namespace
+{
+  /** dP/dF of every kinematics wrapped with thermal expansion against central differences of
+      all nine components of F (h = 1e-7; the bound of the isothermal models, 1e-6 relative), at
+      a plastic and an elastic F, at temperature @p T. */
+  void expect_tangents_match(const MaterialParameters &material, const double T)
+  {
+    const Tensor<2, 3> F_plastic
+        = identity() + Tensor<2, 3>({{0.03, 0.01, 0.}, {0.005, -0.02, 0.002}, {0., 0.003, -0.008}});
+    const Tensor<2, 3> F_elastic
+        = identity() + 1e-4 * Tensor<2, 3>({{3., 1., 0.}, {0.5, -2., 0.2}, {0., 0.3, -0.8}});
+    const ThermalExpansionParameters thermal = expansion(1.2e-5);
+    for (const KinematicsType k : all_kinematics)
+    {
+      const auto    model = create_constitutive_model(k, material, false, &thermal);
+      MaterialState old;
+      old.temperature = T;
+      const double e_plastic = ausroll::testing::tangent_error(*model, old, F_plastic);
+      const double e_elastic = ausroll::testing::tangent_error(*model, old, F_elastic);
+      std::printf("[ %-18s ] T = %g: FD error plastic %.2e, elastic %.2e\n",
+                  to_string(k).c_str(),
+                  T,
+                  e_plastic,
+                  e_elastic);
+      EXPECT_LT(e_plastic, 1e-6) << to_string(k);
+      EXPECT_LT(e_elastic, 1e-6) << to_string(k);
+    }
+  }
+} // namespace
+
 TEST(ThermalExpansionModel, TangentsMatchFiniteDifferences)
 {
-  // dP/dF of the wrapped model against central differences of all nine components of F
-  // (h = 1e-7; the bound of the isothermal models, 1e-6 relative), elastic and plastic, at T far
-  // from T_ref. (PlaneStressDriver condenses F_zz out of its tangent and is checked in
-  // test_finite_strain.cc; the wrapper sits inside it.)
-  const Tensor<2, 3> F_plastic
-      = identity() + Tensor<2, 3>({{0.03, 0.01, 0.}, {0.005, -0.02, 0.002}, {0., 0.003, -0.008}});
-  const Tensor<2, 3> F_elastic
-      = identity() + 1e-4 * Tensor<2, 3>({{3., 1., 0.}, {0.5, -2., 0.2}, {0., 0.3, -0.8}});
-  const ThermalExpansionParameters thermal = expansion(1.2e-5);
-  for (const KinematicsType k : all_kinematics)
-  {
-    const auto    model = create_constitutive_model(k, steel(1000.), false, &thermal);
-    MaterialState old;
-    old.temperature = 320.;
-    const double e_plastic = ausroll::testing::tangent_error(*model, old, F_plastic);
-    const double e_elastic = ausroll::testing::tangent_error(*model, old, F_elastic);
-    std::printf("[ %-18s ] FD error plastic %.2e, elastic %.2e\n",
-                to_string(k).c_str(),
-                e_plastic,
-                e_elastic);
-    EXPECT_LT(e_plastic, 1e-6) << to_string(k);
-    EXPECT_LT(e_elastic, 1e-6) << to_string(k);
-  }
+  // At T far from T_ref. (PlaneStressDriver condenses F_zz out of its tangent and is checked
+  // in test_finite_strain.cc; the wrapper sits inside it.)
+  expect_tangents_match(steel(1000.), 320.);
 }
 
 TEST(ThermalExpansionModel, PlasticWorkOfLinearHardeningIsExact)
@@ -224,6 +235,71 @@ TEST(ThermalExpansionModel, PlasticWorkOfLinearHardeningIsExact)
   const double a1 = alpha[5], a2 = alpha.back();
   const double expected = 400. * (a2 - a1) + 0.5 * H * (a2 * a2 - a1 * a1);
   EXPECT_NEAR(work.back() - work[5], expected, 1e-10 * expected);
+}
+
+// ------------------------------------------------------- temperature-dependent moduli and yield
+
+namespace
+{
+  /** Steel with E, nu, sigma_0 and H as tables in T (values at 170 C: E = 175000, nu = 0.31,
+      sigma_0 = 300, H = 1500). */
+  MaterialParameters hot_steel()
+  {
+    MaterialParameters p;
+    p.youngs_modulus = PropertyTable::parse("20: 200000, 320: 150000", "E", "", true);
+    p.poissons_ratio = PropertyTable::parse("20: 0.3, 320: 0.32", "nu", "", false);
+    p.yield_stress = PropertyTable::parse("20: 400, 320: 200", "sigma_0", "", true);
+    p.hardening_modulus = PropertyTable::parse("20: 2000, 320: 1000", "H", "", false, true);
+    return p;
+  }
+} // namespace
+
+TEST(TemperatureDependentMaterial, ModuliAndYieldStressAtTheStateTemperature)
+{
+  // Clamped (F = I) at T = 170 C: small strain sigma = -3 K(T) alpha dT with the moduli of the
+  // table at 170 C (E = 175000, nu = 0.31), to round-off; and a radial return at 170 C ends on
+  // sigma_0(T) + H(T) dalpha (J2, linear hardening), to 1e-12.
+  const double                     E = 175000., nu = 0.31, K = E / (3. * (1. - 2. * nu));
+  const double                     alpha = 1.2e-5, dT = 150.;
+  const ThermalExpansionParameters thermal = expansion(alpha);
+  const MaterialParameters         material = hot_steel();
+  EXPECT_EQ(material.first_temperature_dependent_entry(), "Material/Young's modulus");
+  EXPECT_TRUE(material.depends_on_temperature());
+  EXPECT_FALSE(steel().depends_on_temperature());
+  {
+    const auto model
+        = create_constitutive_model(KinematicsType::small_strain, material, false, &thermal);
+    MaterialState old, state;
+    old.temperature = 20. + dT;
+    Tensor<2, 3> P;
+    model->evaluate(identity(), old, state, P, nullptr);
+    const double expected = -3. * K * alpha * dT; // 222 MPa hydrostatic: no yielding
+    for (unsigned int i = 0; i < 3; ++i)
+      EXPECT_NEAR(state.stress[i][i], expected, 1e-12 * std::abs(expected));
+    // the same state at 20 C uses E = 200000, nu = 0.3 (no thermal strain there)
+    EXPECT_NEAR(model->plasticity().elasticity(20.).youngs_modulus, 200000., 1e-9);
+    EXPECT_NEAR(model->plasticity().elasticity(170.).poissons_ratio, nu, 1e-15);
+  }
+  const auto                    plasticity = create_plasticity_model(material);
+  dealii::SymmetricTensor<2, 3> trial;
+  trial[0][1] = trial[1][0] = 600.; // q_trial = sqrt(3) 600 = 1039 MPa
+  const ReturnMappingResult r = plasticity->return_map(trial, {}, 0.01, 170.);
+  ASSERT_TRUE(r.plastic);
+  const double q = std::sqrt(1.5) * dealii::deviator(r.stress).norm();
+  EXPECT_NEAR(q, 300. + 1500. * (0.01 + r.eq_plastic_strain_increment), 1e-12 * q);
+  EXPECT_NEAR(plasticity->yield_function(
+                  r.stress, r.back_stress, 0.01 + r.eq_plastic_strain_increment, 170.),
+              0.,
+              1e-9);
+  // at 20 C the same stress lies inside the surface of sigma_0 (20) + H (20) 0.01 = 420 MPa
+  EXPECT_NEAR(plasticity->yield_function(r.stress, r.back_stress, 0.01, 20.), q - 420., 1e-9);
+}
+
+TEST(TemperatureDependentMaterial, TangentsMatchFiniteDifferences)
+{
+  // The moduli and hardening of the tables at 170 C (between the rows): the temperature is
+  // fixed during the mechanical solve, so the tangent is the isothermal one at T.
+  expect_tangents_match(hot_steel(), 170.);
 }
 
 // ------------------------------------------------------------------ martensitic transformation
@@ -284,4 +360,73 @@ TEST(PhaseTransformationModel, FreeTransformationIsStressFreeAndTangentsMatch)
     EXPECT_LT(max_abs(P), 1e-9 * 2000.) << to_string(k);
     EXPECT_LT(ausroll::testing::tangent_error(*model, old, F_plastic), 1e-6) << to_string(k);
   }
+}
+
+// ------------------------------------------------------------------------ bainite (JMAK, TTT)
+
+TEST(BainiteKinetics, IsothermalHoldIsJmakThroughTheTttTimes)
+{
+  // TTT rows 250 C: 20 / 400 s, 350 C: 10 / 200 s -> at 300 C t_s = 15 s, t_f = 300 s; JMAK
+  // through (t_s, 1 %) and (t_f, 99 %): the fractions at t_s and t_f to 1e-12, and the
+  // additivity rule is exact for an isothermal hold whatever the steps (uneven steps here).
+  const BainiteKinetics b("250: 20, 350: 10", "250: 400, 350: 200", "start", "finish", "");
+  ASSERT_TRUE(b.active());
+  const double n = std::log(std::log(0.01) / std::log(0.99)) / std::log(20.);
+  EXPECT_NEAR(b.exponent(300.), n, 1e-14);
+  const double k = -std::log(0.99) / std::pow(15., n);
+  EXPECT_NEAR(b.rate(300.), k, 1e-14 * k);
+  EXPECT_NEAR(b.advance(0., 300., 15.), 0.01, 1e-12);
+  EXPECT_NEAR(b.advance(0., 300., 300.), 0.99, 1e-12);
+  double xi = 0., t = 0.;
+  for (unsigned int s = 1; s <= 25; ++s)
+  {
+    const double dt = 0.5 * s;
+    xi = b.advance(xi, 300., dt);
+    t += dt;
+    EXPECT_NEAR(xi, -std::expm1(-k * std::pow(t, n)), 1e-12) << "t = " << t;
+  }
+  // outside the range (below 250 C or above 350 C) nothing forms
+  EXPECT_EQ(b.advance(0.2, 240., 100.), 0.2);
+  EXPECT_EQ(b.advance(0.2, 360., 100.), 0.2);
+}
+
+TEST(BainiteKinetics, AdditivityAcrossTemperatures)
+{
+  // 10 s at 250 C, then 10 s at 350 C: the second hold starts at the fictitious time at which
+  // 350 C gives the fraction of the first: t* = (-ln(1 - xi_1) / k_2)^(1/n_2).
+  const BainiteKinetics b("250: 20, 350: 10", "250: 400, 350: 200", "start", "finish", "");
+  const double          xi1 = -std::expm1(-b.rate(250.) * std::pow(10., b.exponent(250.)));
+  EXPECT_NEAR(b.advance(0., 250., 10.), xi1, 1e-15);
+  const double t_star = std::pow(-std::log1p(-xi1) / b.rate(350.), 1. / b.exponent(350.));
+  EXPECT_NEAR(b.advance(xi1, 350., 10.),
+              -std::expm1(-b.rate(350.) * std::pow(t_star + 10., b.exponent(350.))),
+              1e-15);
+  // two steps of 5 s at 350 C are one of 10 s
+  EXPECT_NEAR(b.advance(b.advance(xi1, 350., 5.), 350., 5.), b.advance(xi1, 350., 10.), 1e-14);
+}
+
+TEST(BainiteKinetics, BadTablesNameTheEntry)
+{
+  const auto message = [](const std::string &start, const std::string &finish)
+  {
+    try
+    {
+      BainiteKinetics(
+          start, finish, "Phases/Bainite start times", "Phases/Bainite finish times", "");
+    }
+    catch (const ausroll::InputError &e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("", "").find("no error"), 0u);
+  EXPECT_NE(message("250: 20, 350: 10", "").find("Phases/Bainite finish times: is empty"),
+            std::string::npos);
+  EXPECT_NE(message("350: 10, 250: 20", "250: 400, 350: 200").find("must increase strictly"),
+            std::string::npos);
+  EXPECT_NE(message("250: 20, 350: 10", "250: 400, 300: 200").find("same temperatures"),
+            std::string::npos);
+  EXPECT_NE(message("250: 20, 350: 10", "250: 400, 350: 5").find("later than the start"),
+            std::string::npos);
 }

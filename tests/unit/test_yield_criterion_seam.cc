@@ -40,10 +40,12 @@ namespace
         , wrong(wrong)
     {
     }
-    SymmetricTensor<4, 3> back_stress_sensitivity(const ReturnMappingResult &result) const override
+    SymmetricTensor<4, 3> back_stress_sensitivity(const ReturnMappingResult &result,
+                                                  const double temperature) const override
     {
       ++calls;
-      return wrong ? SymmetricTensor<4, 3>() : VonMisesPlasticity::back_stress_sensitivity(result);
+      return wrong ? SymmetricTensor<4, 3>()
+                   : VonMisesPlasticity::back_stress_sensitivity(result, temperature);
     }
 
   private:
@@ -126,6 +128,6 @@ TEST(YieldCriterionSeam, ElasticModelHasNoBackStressSensitivity)
   p.yield_criterion = YieldCriterion::none;
   const auto                model = create_plasticity_model(p);
   const ReturnMappingResult r
-      = model->return_map(SymmetricTensor<2, 3>(), SymmetricTensor<2, 3>(), 0.);
-  EXPECT_EQ(model->back_stress_sensitivity(r).norm(), 0.);
+      = model->return_map(SymmetricTensor<2, 3>(), SymmetricTensor<2, 3>(), 0., 0.);
+  EXPECT_EQ(model->back_stress_sensitivity(r, 0.).norm(), 0.);
 }

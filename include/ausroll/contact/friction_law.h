@@ -96,6 +96,9 @@ namespace ausroll::contact
     /** Shear yield stress k = sigma_0 / sqrt(3) of the workpiece's initial yield stress
         (`Material/Yield stress`); 0 for an elastic workpiece. */
     double shear_yield_stress = 0.;
+    /** True if `Material/Yield stress` is a table in temperature (no single k: the shear laws
+        refuse it). */
+    bool yield_stress_depends_on_temperature = false;
   };
 
   /** The context of a workpiece of material @p material: k = sigma_0 / sqrt(3) of its initial

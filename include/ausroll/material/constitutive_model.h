@@ -53,6 +53,14 @@ namespace ausroll::material
                           dealii::Tensor<2, 3>       &P,
                           dealii::Tensor<4, 3>       *tangent) const = 0;
 
+    /**
+     * The length of the load step (time in s) that the following evaluations belong to, for laws
+     * with kinetics (PhaseTransformationModel's bainite); 0 outside a step (re-equilibration after
+     * a mesh change, output). Set by the scene, single-threaded, before the step's assemblies;
+     * ASPECT's material models read the time step the same way. Default: not used.
+     */
+    virtual void set_step_length(const double dt) { (void)dt; }
+
     /** True if the model neglects geometric nonlinearity (the mesh never moves). */
     virtual bool is_small_strain() const = 0;
 
@@ -78,7 +86,7 @@ namespace ausroll::material
     virtual double yield_function(const MaterialState &state) const
     {
       return plasticity().yield_function(
-          state.stress, state.back_stress, state.equivalent_plastic_strain);
+          state.stress, state.back_stress, state.equivalent_plastic_strain, state.temperature);
     }
 
     /** Project the stress of @p state onto the yield surface if it lies outside (after a mesh
@@ -86,7 +94,7 @@ namespace ausroll::material
     virtual void make_admissible(MaterialState &state) const
     {
       state.stress = plasticity().project_onto_yield_surface(
-          state.stress, state.back_stress, state.equivalent_plastic_strain);
+          state.stress, state.back_stress, state.equivalent_plastic_strain, state.temperature);
     }
   };
 

@@ -16,8 +16,8 @@ namespace ausroll::material
   class HardeningLaw
   {
   public:
-    /** Build the law selected in @p parameters. */
-    explicit HardeningLaw(const MaterialParameters &parameters);
+    /** The law selected in @p parameters, its parameters evaluated at @p temperature. */
+    explicit HardeningLaw(const MaterialParameters &parameters, const double temperature = 0.);
 
     /** sigma_y(eps_p). */
     double yield_stress(const double eq_plastic_strain) const;

@@ -37,7 +37,8 @@ namespace ausroll::material
    *   (N mm / mm^3 = MPa; thermal scenes only: ThermalExpansionModel; the source of plastic
    *   heating).
    * - @ref martensite, @ref carbon: martensite volume fraction (the rest is austenite) and carbon
-   *   content in wt% (scenes with `Phases/Enabled`: PhaseTransformationModel; 0 otherwise).
+   *   content in wt% (scenes with `Phases/Enabled`: PhaseTransformationModel; 0 otherwise);
+   *   @ref bainite: bainite volume fraction (with `Phases/Bainite start times`; 0 otherwise).
    */
   struct MaterialState
   {
@@ -51,12 +52,13 @@ namespace ausroll::material
     double                        plastic_work = 0.; ///< int tau_vm d alpha (thermal)
     double                        martensite = 0.;   ///< martensite volume fraction (phases)
     double                        carbon = 0.;       ///< carbon content, wt% (phases)
+    double                        bainite = 0.;      ///< bainite volume fraction (phases)
 
     /** The undeformed, stress-free state: F = b_e = I, everything else zero. */
     MaterialState();
 
     /** Number of doubles written by pack(). */
-    static constexpr unsigned int n_packed_values = 6 * 4 + 9 + 5;
+    static constexpr unsigned int n_packed_values = 6 * 4 + 9 + 6;
 
     /** Append the state to @p data as n_packed_values doubles (mesh transfer, checkpoints). */
     void pack(std::vector<double> &data) const;

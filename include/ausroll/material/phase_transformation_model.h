@@ -5,6 +5,7 @@
  */
 #pragma once
 
+#include <ausroll/material/bainite_kinetics.h>
 #include <ausroll/material/wrapped_model.h>
 
 #include <deal.II/base/function_parser.h>
@@ -25,11 +26,25 @@ namespace ausroll::material
     double      koistinen_marburger = 0.011; ///< `Koistinen-Marburger coefficient` b (1/K)
     /** `Transformation volume change` austenite to martensite in per cent, expression of C. */
     std::string volume_change = "4.64 - 0.53*C";
+    /** `Bainite start times` t_s(T) of the TTT diagram (s; a table in T, empty: no bainite). */
+    std::string bainite_start;
+    /** `Bainite finish times` t_f(T) (s; the same temperatures as the start times). */
+    std::string bainite_finish;
+    /** `Bainite volume change` austenite to bainite in per cent, expression of C. */
+    std::string bainite_volume_change = "4.64 - 1.43*C";
+    /** Folder of the `.prm` file (resolves `file:` tables). */
+    std::string input_directory;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
 
-    /** Read the subsection; @p thermal: `Thermal/Enabled` (phases need the temperature). */
-    void parse_parameters(dealii::ParameterHandler &prm, const bool thermal);
+    /** Read the subsection; @p thermal: `Thermal/Enabled` (phases need the temperature);
+        @p directory: the `.prm` file's folder. */
+    void parse_parameters(dealii::ParameterHandler &prm,
+                          const bool                thermal,
+                          const std::string        &directory = "");
+
+    /** True if the bainite kinetics are given. */
+    bool has_bainite() const { return enabled && !bainite_start.empty(); }
   };
 
   /**
@@ -43,7 +58,13 @@ namespace ausroll::material
    *   as a stretch theta_tr = (1 + f dV/V)^(1/3) (multiplicative, as ThermalExpansionModel:
    *   P = theta_tr^2 P_inner(F / theta_tr), dP/dF = theta_tr dP_inner/dF) or, in small strain,
    *   additive (theta_tr - 1) I.
-   * Not yet: transformation plasticity (TRIP), bainite, a mixture rule for the yield stress, the
+   * - bainite (optional, `Bainite start times`/`Bainite finish times`): BainiteKinetics (JMAK
+   *   through the TTT start and finish times, additivity rule) over the step length
+   *   set_step_length() at the temperature of the state, of the austenite not transformed to
+   *   martensite: f_B = xi (1 - f_M) with xi the kinetics' share; martensite then forms from the
+   *   austenite left, f_M = max(f_M,old, (1 - f_B) KM(T)); its volume change f_B dV_B/V(C) adds
+   *   to the martensite's in the stretch theta_tr = (1 + f_M dV_M/V + f_B dV_B/V)^(1/3).
+   * Not yet: transformation plasticity (TRIP), a mixture rule for the yield stress, the
    * mechanical stabilisation of austenite.
    */
   class PhaseTransformationModel : public WrappedModel
@@ -60,16 +81,38 @@ namespace ausroll::material
 
     void rebase(MaterialState &state, const dealii::Tensor<2, 3> &F) const override;
 
+    /** The length of the step the next evaluations belong to (the bainite kinetics). */
+    void set_step_length(const double dt) override
+    {
+      step_length = dt;
+      WrappedModel::set_step_length(dt);
+    }
+
     /** Ms at carbon content @p C (wt%). */
     double martensite_start(const double C) const;
 
-    /** Martensite fraction after a step at temperature @p T from fraction @p f_old. */
-    double martensite_fraction(const double f_old, const double C, const double T) const;
+    /** Martensite fraction after a step at temperature @p T from fraction @p f_old, with the
+        bainite fraction @p bainite (not available to martensite). */
+    double martensite_fraction(const double f_old,
+                               const double C,
+                               const double T,
+                               const double bainite = 0.) const;
 
-    /** theta_tr of fraction @p f at carbon @p C. */
-    double transformation_stretch(const double f, const double C) const;
+    /** Bainite fraction after a step of length @p dt at @p T from @p f_old, with the martensite
+        fraction @p martensite of the step's start. */
+    double bainite_fraction(const double f_old,
+                            const double martensite,
+                            const double T,
+                            const double dt) const;
+
+    /** theta_tr of martensite fraction @p f and bainite fraction @p f_b at carbon @p C. */
+    double transformation_stretch(const double f, const double C, const double f_b = 0.) const;
 
   private:
+    BainiteKinetics                            bainite;          ///< TTT kinetics (may be inactive)
+    std::unique_ptr<dealii::FunctionParser<1>> dv_bainite;       ///< dV/V(C) of bainite, per cent
+    double                                     step_length = 0.; ///< dt of the current step
+
     double                                     b;  ///< Koistinen-Marburger coefficient (1/K)
     std::unique_ptr<dealii::FunctionParser<1>> ms; ///< Ms(C)
     std::unique_ptr<dealii::FunctionParser<1>> dv; ///< dV/V(C) in per cent

@@ -36,6 +36,13 @@ namespace ausroll::material
    * eps_e_trial; the result's tangent is d sigma / d eps_e_trial (consistent with the discrete
    * update).
    *
+   * Every call takes the temperature of the material point (an external state variable, as in
+   * MFront's behaviours): the moduli and hardening parameters are PropertyTable values of
+   * `Material`, evaluated at that temperature (isothermal scenes: constants, the temperature is
+   * not read). The kinematics pass MaterialState::temperature of the committed state, the
+   * temperature field at the start of the step (the isothermal split holds it fixed during the
+   * mechanical solve, so the tangent has no temperature term).
+   *
    * The seam for a yield criterion (`Material/Yield criterion`): a new criterion derives from this
    * class and provides
    *  - return_map(): admissible stress, plastic strain increment, updated back stress, Delta alpha
@@ -61,11 +68,13 @@ namespace ausroll::material
 
     /**
      * Return @p trial_stress to the yield surface given the state at the start of the step
-     * (back stress @p back_stress_old, equivalent plastic strain @p alpha_old).
+     * (back stress @p back_stress_old, equivalent plastic strain @p alpha_old) at
+     * @p temperature.
      */
     virtual ReturnMappingResult return_map(const dealii::SymmetricTensor<2, 3> &trial_stress,
                                            const dealii::SymmetricTensor<2, 3> &back_stress_old,
-                                           const double alpha_old) const = 0;
+                                           const double                         alpha_old,
+                                           const double temperature) const = 0;
 
     /**
      * The stress on the yield surface closest to @p stress in the deviatoric sense, or @p stress
@@ -75,17 +84,20 @@ namespace ausroll::material
     virtual dealii::SymmetricTensor<2, 3>
     project_onto_yield_surface(const dealii::SymmetricTensor<2, 3> &stress,
                                const dealii::SymmetricTensor<2, 3> &back_stress,
-                               const double                         alpha) const
+                               const double                         alpha,
+                               const double                         temperature) const
     {
       (void)back_stress;
       (void)alpha;
+      (void)temperature;
       return stress;
     }
 
-    /** Value of the yield function (negative inside the elastic domain). */
+    /** Value of the yield function at @p temperature (negative inside the elastic domain). */
     virtual double yield_function(const dealii::SymmetricTensor<2, 3> &stress,
                                   const dealii::SymmetricTensor<2, 3> &back_stress,
-                                  const double                         alpha) const = 0;
+                                  const double                         alpha,
+                                  const double                         temperature) const = 0;
 
     /**
      * Sensitivity of the returned stress to the back stress at the start of the step,
@@ -94,14 +106,31 @@ namespace ausroll::material
      * back stress with the deformation before the return; only their tangent uses it.
      */
     virtual dealii::SymmetricTensor<4, 3>
-    back_stress_sensitivity(const ReturnMappingResult &result) const = 0;
+    back_stress_sensitivity(const ReturnMappingResult &result, const double temperature) const = 0;
 
-    /** The elastic law. */
-    const IsotropicElasticity &elasticity() const { return elastic; }
+    /** The elastic law at @p temperature. */
+    IsotropicElasticity elasticity(const double temperature) const
+    {
+      if (!elastic_depends_on_temperature)
+        return elastic;
+      return IsotropicElasticity(youngs_modulus.value(temperature),
+                                 poissons_ratio.value(temperature));
+    }
 
   protected:
-    IsotropicElasticity           elastic;   ///< elastic moduli
-    dealii::SymmetricTensor<4, 3> stiffness; ///< C
+    /** The elasticity tensor C at @p temperature. */
+    dealii::SymmetricTensor<4, 3> stiffness_at(const double temperature) const
+    {
+      if (!elastic_depends_on_temperature)
+        return stiffness;
+      return elasticity(temperature).stiffness();
+    }
+
+    PropertyTable                 youngs_modulus;                 ///< E(T)
+    PropertyTable                 poissons_ratio;                 ///< nu(T)
+    bool                          elastic_depends_on_temperature; ///< E or nu is a table
+    IsotropicElasticity           elastic;   ///< elastic moduli (constant moduli)
+    dealii::SymmetricTensor<4, 3> stiffness; ///< C (constant moduli)
   };
 
   /**
@@ -114,18 +143,20 @@ namespace ausroll::material
 
     ReturnMappingResult return_map(const dealii::SymmetricTensor<2, 3> &trial_stress,
                                    const dealii::SymmetricTensor<2, 3> &back_stress_old,
-                                   const double                         alpha_old) const override;
+                                   const double                         alpha_old,
+                                   const double                         temperature) const override;
 
     double yield_function(const dealii::SymmetricTensor<2, 3> &,
                           const dealii::SymmetricTensor<2, 3> &,
+                          const double,
                           const double) const override
     {
       return -1.;
     }
 
     /** Zero: the elastic return does not see the back stress. */
-    dealii::SymmetricTensor<4, 3>
-    back_stress_sensitivity(const ReturnMappingResult &result) const override;
+    dealii::SymmetricTensor<4, 3> back_stress_sensitivity(const ReturnMappingResult &result,
+                                                          const double temperature) const override;
   };
 
   /**
@@ -143,17 +174,20 @@ namespace ausroll::material
 
     ReturnMappingResult return_map(const dealii::SymmetricTensor<2, 3> &trial_stress,
                                    const dealii::SymmetricTensor<2, 3> &back_stress_old,
-                                   const double                         alpha_old) const override;
+                                   const double                         alpha_old,
+                                   const double                         temperature) const override;
 
     double yield_function(const dealii::SymmetricTensor<2, 3> &stress,
                           const dealii::SymmetricTensor<2, 3> &back_stress,
-                          const double                         alpha) const override;
+                          const double                         alpha,
+                          const double                         temperature) const override;
 
     /** Radial scaling of dev(sigma) - beta onto the yield surface; pressure unchanged. */
     dealii::SymmetricTensor<2, 3>
     project_onto_yield_surface(const dealii::SymmetricTensor<2, 3> &stress,
                                const dealii::SymmetricTensor<2, 3> &back_stress,
-                               const double                         alpha) const override;
+                               const double                         alpha,
+                               const double                         temperature) const override;
 
     /**
      * (C - D) / (2 mu) from the algorithmic tangent D of @p result: the radial return depends on
@@ -161,12 +195,20 @@ namespace ausroll::material
      * deviatoric, so a deviatoric change of beta_old acts as minus the same change of
      * dev(sigma_trial) = 2 mu dev(eps_e_trial).
      */
-    dealii::SymmetricTensor<4, 3>
-    back_stress_sensitivity(const ReturnMappingResult &result) const override;
+    dealii::SymmetricTensor<4, 3> back_stress_sensitivity(const ReturnMappingResult &result,
+                                                          const double temperature) const override;
 
   private:
-    HardeningLaw hardening;         ///< isotropic hardening sigma_y(alpha)
-    double       kinematic_modulus; ///< H_k
+    /** The isotropic hardening law at @p temperature. */
+    HardeningLaw hardening_at(const double temperature) const
+    {
+      return hardening_depends_on_temperature ? HardeningLaw(parameters, temperature) : hardening;
+    }
+
+    MaterialParameters parameters;                 ///< the tables of `Material`
+    bool         hardening_depends_on_temperature; ///< a hardening parameter or H_k is a table
+    HardeningLaw hardening;         ///< isotropic hardening sigma_y(alpha) (constant case)
+    double       kinematic_modulus; ///< H_k (constant case)
   };
 
   /** The plasticity model selected by `Material/Yield criterion`. */

@@ -23,7 +23,7 @@ namespace ausroll::material
   {
   public:
     /** A constant property. */
-    explicit PropertyTable(const double value = 0.);
+    PropertyTable(const double value = 0.); // NOLINT: a number is a constant table
 
     /**
      * Parse @p text (see the class description) for entry @p entry (its full path, for messages);
@@ -44,6 +44,9 @@ namespace ausroll::material
 
     /** True if the property does not depend on temperature. */
     bool is_constant() const { return temperatures.size() <= 1; }
+
+    /** The temperatures of the rows (one row: a constant). */
+    const std::vector<double> &row_temperatures() const { return temperatures; }
 
     /** Smallest and largest value of the table. */
     double min_value() const;

@@ -40,6 +40,9 @@ namespace ausroll::material
 
     const PlasticityModel &plasticity() const override { return inner->plasticity(); }
 
+    /** Passed on to the inner model. */
+    void set_step_length(const double dt) override { inner->set_step_length(dt); }
+
   protected:
     /**
      * An isotropic stretch theta of the intermediate configuration (thermal or transformation

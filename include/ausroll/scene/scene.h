@@ -81,6 +81,7 @@ namespace ausroll::scene
     solver::NewtonResult solve(const double t, const double predictor_ratio) override
     {
       time = t;
+      model->set_step_length(t - step_start_time); // kinetics of the material (bainite)
       system.start_step(predictor_ratio);
       thermal_current = false;
       const solver::NewtonResult result = newton.solve(*equilibrium, newton_log);
