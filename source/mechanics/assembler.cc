@@ -53,7 +53,7 @@ namespace ausroll::mechanics
     // the cached terms lead the list
     for (unsigned int t = 0; t < terms.size(); ++t)
     {
-      AssertThrow(terms[t]->cached() == (t == n_cached_terms), ExcInternalError());
+      AssertThrow(!terms[t]->cached() || t == n_cached_terms, ExcInternalError());
       if (terms[t]->cached())
         ++n_cached_terms;
     }
