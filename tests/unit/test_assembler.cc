@@ -145,3 +145,41 @@ TEST(Assembler, TangentMatchesFiniteDifferencesOfResidual)
     EXPECT_LT(err, 1e-6) << label(c);
   }
 }
+
+// The hoop entry the assembly terms are specialised on (PlanarKinematics::with_hoop_entry()) is
+// the out-of-plane entry of the kinematics' own 3D shape gradient and deformation gradient
+// (PlanarKinematics::shape_gradient(), deformation_gradient(): an independent implementation),
+// for every planar model and both components; exact, the same operations (phi / R, 1 + u_r / R).
+TEST(Assembler, HoopEntryIsTheOutOfPlaneEntryOfTheKinematics)
+{
+  using M = mechanics::PlanarModel;
+  const Point<2> X(1.7, 0.4);
+  for (const M m : {M::plane_strain, M::plane_stress, M::axisymmetric})
+  {
+    const mechanics::PlanarKinematics<2> kinematics(m, 2.5);
+    kinematics.with_hoop_entry(
+        [&](auto hoop)
+        {
+          using Hoop = decltype(hoop);
+          EXPECT_EQ(Hoop::n_entries, m == M::axisymmetric ? 1u : 0u);
+          for (unsigned int c = 0; c < 2; ++c)
+          {
+            Tensor<1, 2> phi;
+            phi[c] = 0.37;
+            Tensor<2, 2> grad_phi;
+            grad_phi[c][0] = 0.11;
+            grad_phi[c][1] = -0.23;
+            const double expected = kinematics.shape_gradient(grad_phi, phi, X)[2][2];
+            const double entry = Hoop::has_entry(c) ? Hoop::entry(phi[c], X) : 0.;
+            EXPECT_EQ(entry, expected) << "component " << c;
+            EXPECT_EQ(Hoop::product(3., entry), 3. * expected) << "component " << c;
+          }
+          const Tensor<1, 2> u({0.21, -0.05});
+          EXPECT_EQ(Hoop::stretch(u, X),
+                    kinematics.deformation_gradient(Tensor<2, 2>(), u, X)[2][2]);
+        });
+  }
+  // 3D: no hoop entry
+  const mechanics::PlanarKinematics<3> kinematics_3d(M::axisymmetric, 1.);
+  kinematics_3d.with_hoop_entry([](auto hoop) { EXPECT_EQ(decltype(hoop)::n_entries, 0u); });
+}

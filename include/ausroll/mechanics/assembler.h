@@ -9,6 +9,8 @@
 #include <ausroll/mechanics/boundary_conditions.h>
 #include <ausroll/mechanics/material_point_storage.h>
 #include <ausroll/mechanics/planar_kinematics.h>
+#include <ausroll/mechanics/terms/interface.h>
+#include <ausroll/mechanics/terms/internal_force.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -106,15 +108,17 @@ namespace ausroll::mechanics
 
   /**
    * Assembles residual and tangent of quasi-static equilibrium, div P = 0 in the reference
-   * configuration, for any ConstitutiveModel. In the shape of deal.II's step-44: a cell part
-   * (with the F-bar helper), a face-load part and a row-transform part run per cell by
-   * dealii::WorkStream on `DEAL_II_NUM_THREADS` threads (scratch and copy data), and a copier that
-   * adds each cell to the Trilinos targets through AffineConstraints::distribute_local_to_global
-   * in cell order, so the sums are the serial ones whatever the number of threads (the worker is
-   * assemble_one_cell(): assemble_cell() with the F-bar helper f_bar_reference() / f_bar_point() /
-   * add_f_bar_tangent(), assemble_face_loads(), apply_row_transforms(); each part has its own
-   * scratch data: CellScratch, FBarScratch, FaceScratch). The 3D embedding
-   * of the planar model comes from PlanarKinematics; surface loads from BoundaryConditions.
+   * configuration, for any ConstitutiveModel. A dealii::WorkStream driver (deal.II's step-44 shape,
+   * the term list after ASPECT's Assemblers::Manager) over a list of AssemblyTerm objects
+   * (mechanics/terms/) built once in the constructor: InternalForce (quadrature loop, material
+   * points, internal force, material tangent; with the F-bar policy FBar of terms/f_bar.h) and
+   * the face loads (terms/face_loads.h, follower pressure in terms/follower_pressure.h). The
+   * terms are specialised once for the hoop entry of the kinematics (NoHoopEntry,
+   * AxisymmetricHoopEntry in planar_kinematics.h), so neither the driver nor a term tests the
+   * planar model. Per cell on `DEAL_II_NUM_THREADS` threads the worker assemble_one_cell() calls
+   * each term once with its own scratch, then the row-transform part; a copier adds each cell
+   * to the Trilinos targets through AffineConstraints::distribute_local_to_global in cell order,
+   * so the sums are the serial ones whatever the number of threads.
    *
    * Surface loads: `traction` conditions are dead loads per reference area. `pressure` conditions
    * act on the reference surface for a small-strain model and on the deformed surface otherwise
@@ -198,70 +202,18 @@ namespace ausroll::mechanics
   private:
     using ActiveCell = typename dealii::DoFHandler<dim>::active_cell_iterator;
 
-    struct Setup;       ///< what one assembly call needs in every cell (flags, tables, inputs)
-    struct CellScratch; ///< cell part: FEValues, Grad u, shape-function gradients G_i, P, A
-    struct FBarScratch; ///< F-bar helper: centre FEValues, J0, tr(F0 - I), d ln J0 / du_j
-    struct FaceScratch; ///< face-load part: FEFaceValues, Grad u and u on the face
-    struct ScratchData; ///< the three parts, one per thread (WorkStream scratch)
-    struct CopyData;    ///< local matrix and vectors of one cell, its failure (WorkStream copy)
-    struct FBarPoint;   ///< F-bar at one point: F_bar, s, kappa, F^-1
+    struct Setup;       ///< what one assembly call needs besides the terms' inputs (targets, cache)
+    struct ScratchData; ///< one scratch object per term, one ScratchData per thread
+    using CopyData = LocalSystem; ///< local matrix and vectors of one cell (WorkStream copy)
 
     /**
-     * WorkStream worker: cell part (with the F-bar helper), face-load part and row-transform
-     * part of @p cell into @p copy (residual = internal - external force).
+     * WorkStream worker: the terms of @p cell into @p copy (residual = internal - external
+     * force): the cached terms (or their cached sum), then the others, then the row transforms.
      */
     void assemble_one_cell(const ActiveCell &cell,
                            const Setup      &setup,
                            ScratchData      &scratch,
                            CopyData         &copy) const;
-
-    /**
-     * Cell part: internal forces and material tangent of one cell (the quadrature loop; with
-     * F-bar the material points see F_bar of f_bar_point() and the tangent gets the reference
-     * term of add_f_bar_tangent()). Zeroes @p copy's matrix and vectors first; sets its failure
-     * for an inverted element or a material failure.
-     */
-    void assemble_cell(const ActiveCell &cell,
-                       const Setup      &setup,
-                       CellScratch      &scratch,
-                       FBarScratch      &f_bar_scratch,
-                       CopyData         &copy) const;
-
-    /**
-     * F-bar helper, per cell: the reference volume change of the cell (J0 and tr(F0 - I) at the
-     * cell centre for Q1, their volume averages over @p cell_scratch's quadrature points, already
-     * reinitialised, for higher degrees) and d ln J0 / du_j (small strain: d tr(F0 - I) / du_j)
-     * into @p scratch. Returns false and sets @p copy's failure for an inverted reference.
-     */
-    bool f_bar_reference(const ActiveCell  &cell,
-                         const Setup       &setup,
-                         const CellScratch &cell_scratch,
-                         FBarScratch       &scratch,
-                         CopyData          &copy) const;
-
-    /** F-bar helper, per point: F_bar = s F (in the n x n block; small strain: the B-bar shift
-        of the trace), s and kappa = s^(1 - n) from the reference in @p scratch. */
-    FBarPoint f_bar_point(const Setup                &setup,
-                          const FBarScratch          &scratch,
-                          const dealii::Tensor<2, 3> &F,
-                          const double                J) const;
-
-    /** F-bar helper, tangent: the rank-one term q_i (d ln J0_j - d ln J_j) of the exact
-        linearisation at one point (weight @p dV) added to @p cell_matrix. */
-    void add_f_bar_tangent(const Setup                &setup,
-                           const FBarPoint            &point,
-                           const dealii::Tensor<2, 3> &F,
-                           const double                dV,
-                           const CellScratch          &cell_scratch,
-                           FBarScratch                &scratch,
-                           dealii::FullMatrix<double> &cell_matrix) const;
-
-    /** Face-load part: surface loads (dead traction, follower pressure and its load stiffness)
-        on the boundary faces of one cell, into @p copy's external force and matrix. */
-    void assemble_face_loads(const ActiveCell &cell,
-                             const Setup      &setup,
-                             FaceScratch      &scratch,
-                             CopyData         &copy) const;
 
     /** Row-transform part: friction row transforms on the rows of the cell's nodes (free
         residual and tangent; the residual itself stays untransformed: reactions). */
@@ -280,9 +232,6 @@ namespace ausroll::mechanics
                        AssemblyCache                               *cache,
                        Setup                                       &setup) const;
 
-    /** The call-independent part of @p setup: flags, shape-function tables, F-bar n and E. */
-    void fill_setup(Setup &setup) const;
-
     /** Add one cell to the targets (serial, in cell order: the WorkStream copier); gathers the
         outcome (failure, min det F) in @p setup. */
     void copy_local_to_global(const CopyData &copy, Setup &setup) const;
@@ -295,6 +244,15 @@ namespace ausroll::mechanics
     const material::ConstitutiveModel &model;
     const BoundaryConditions<dim>     &boundary_conditions;
     const VolumetricLocking            locking; ///< `Model/Volumetric locking treatment`
+    /** The element's tables (component of each shape function, DoFs of each node). */
+    const AssemblyLayout layout;
+
+    /** The internal-force term (also asked for material_deformation_gradients()). */
+    const InternalForce<dim> *internal_force = nullptr;
+    /** The terms in the order they add to a cell: the cached ones first (built once). */
+    std::vector<std::unique_ptr<const AssemblyTerm<dim>>> terms;
+    /** Number of leading terms in @ref terms that form the cached cell part. */
+    unsigned int n_cached_terms = 0;
 
     /** On one thread (DEAL_II_NUM_THREADS=1) the cells are assembled in a plain loop with this
         scratch and copy, kept from call to call (WorkStream builds both anew per call). */

@@ -12,6 +12,64 @@
 namespace ausroll::mechanics
 {
   /**
+   * The out-of-plane (hoop) entry of the 3D shape-function gradient, as the assembly terms see
+   * it: plane strain, plane stress and 3D models have none (F_zz does not depend on the
+   * displacement DoFs), axisymmetric models have F_thetatheta = 1 + u_r / R, whose derivative by
+   * a radial shape function phi is phi / R. The terms are templates on one of the two and ask it
+   * for the entry instead of testing the planar model: with NoHoopEntry every hoop product is
+   * a compile-time zero that the compiler drops, so plane models do not pay for the hoop.
+   * PlanarKinematics::with_hoop_entry() picks the one of the model (once, when the terms are
+   * built). The area/volume factor (thickness, 2 pi R) is PlanarKinematics::volume_factor().
+   */
+  struct NoHoopEntry
+  {
+    /** Number of out-of-plane gradient entries (loops over them vanish). */
+    static constexpr unsigned int n_entries = 0;
+
+    /** Whether a shape function of component @p c has a hoop entry. */
+    static constexpr bool has_entry(const unsigned int /*c*/) { return false; }
+
+    /** The hoop entry phi / R of a shape function with radial value @p phi (never called). */
+    template <int dim>
+    static double entry(const double /*phi*/, const dealii::Point<dim> & /*X*/)
+    {
+      return 0.;
+    }
+
+    /** a * b where the hoop entry exists, else 0 (the product is not formed). */
+    static constexpr double product(const double /*a*/, const double /*b*/) { return 0.; }
+
+    /** The hoop stretch r / R = 1 + u_r / R of the displacement @p u at @p X (here 1). */
+    template <int dim>
+    static double stretch(const dealii::Tensor<1, dim> & /*u*/, const dealii::Point<dim> & /*X*/)
+    {
+      return 1.;
+    }
+  };
+
+  /** The hoop entry of axisymmetric models, (x, y) = (r, z): see NoHoopEntry. */
+  struct AxisymmetricHoopEntry
+  {
+    static constexpr unsigned int n_entries = 1;
+
+    static constexpr bool has_entry(const unsigned int c) { return c == 0; }
+
+    template <int dim>
+    static double entry(const double phi, const dealii::Point<dim> &X)
+    {
+      return phi / X[0];
+    }
+
+    static constexpr double product(const double a, const double b) { return a * b; }
+
+    template <int dim>
+    static double stretch(const dealii::Tensor<1, dim> &u, const dealii::Point<dim> &X)
+    {
+      return 1. + u[0] / X[0];
+    }
+  };
+
+  /**
    * Maps displacement gradients of a planar (dim = 2) or 3D model to the 3x3 deformation gradient
    * the material points work with, and gives the volume measure. Set by `Model/Planar model` and
    * `Model/Thickness`.
@@ -62,6 +120,20 @@ namespace ausroll::mechanics
 
     /** True for the axisymmetric model (shape function values enter the gradient). */
     bool is_axisymmetric() const { return model == PlanarModel::axisymmetric && dim == 2; }
+
+    /**
+     * Call @p f with the hoop-entry object of this model (AxisymmetricHoopEntry for the
+     * axisymmetric model, NoHoopEntry otherwise) and return its result: the one place where the
+     * assembly terms are specialised for the planar model.
+     */
+    template <typename Function>
+    decltype(auto) with_hoop_entry(Function &&f) const
+    {
+      if constexpr (dim == 2)
+        if (is_axisymmetric())
+          return f(AxisymmetricHoopEntry());
+      return f(NoHoopEntry());
+    }
 
     /** The planar model. */
     PlanarModel planar_model() const { return model; }
