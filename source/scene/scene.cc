@@ -2,9 +2,7 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/geometry/workpiece.h>
 #include <ausroll/io/output_directory.h>
-#include <ausroll/io/postprocess/phases.h>
 #include <ausroll/io/postprocess/standard_set.h>
-#include <ausroll/io/postprocess/temperature.h>
 #include <ausroll/io/run_checkpoint.h>
 #include <ausroll/io/run_log.h>
 #include <ausroll/mechanics/distortion_check.h>
@@ -145,17 +143,14 @@ namespace ausroll::scene
   {
     if (!postprocessors)
     {
-      postprocessors = io::make_standard_postprocessors<dim>(parameters.output,
-                                                             parameters.postprocess,
-                                                             parameters.loading.end_time,
-                                                             parameters.material.yield_stress,
-                                                             parameters.model.quadrature_points,
-                                                             comm,
-                                                             thermal != nullptr);
-      if (thermal) // its columns after the mechanical ones
-        postprocessors->add(std::make_unique<io::postprocess::TemperatureField<dim>>());
-      if (parameters.phases.enabled)
-        postprocessors->add(std::make_unique<io::postprocess::PhaseFractions<dim>>());
+      const io::PostprocessorContext context{parameters.output,
+                                             parameters.postprocess,
+                                             parameters.loading.end_time,
+                                             parameters.material.yield_stress,
+                                             parameters.model.quadrature_points,
+                                             thermal != nullptr,
+                                             parameters.phases.enabled};
+      postprocessors = io::make_standard_postprocessors<dim>(context, comm);
     }
     postprocessors->initialize(postprocess_input());
   }
