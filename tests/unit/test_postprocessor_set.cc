@@ -227,12 +227,12 @@ TEST(PostprocessorRegistry, StandardSetKeepsTheColumnOrder)
                                       "die geometry"};
     if (thermal)
       expected.insert(expected.end(), {"temperature", "phases"});
+    const auto               set_2d = io::make_standard_postprocessors<2>(context, MPI_COMM_SELF);
+    const auto               set_3d = io::make_standard_postprocessors<3>(context, MPI_COMM_SELF);
     std::vector<std::string> names_2d, names_3d;
-    for (const auto &p :
-         io::make_standard_postprocessors<2>(context, MPI_COMM_SELF)->postprocessors())
+    for (const auto &p : set_2d->postprocessors())
       names_2d.push_back(p->name());
-    for (const auto &p :
-         io::make_standard_postprocessors<3>(context, MPI_COMM_SELF)->postprocessors())
+    for (const auto &p : set_3d->postprocessors())
       names_3d.push_back(p->name());
     EXPECT_EQ(names_2d, expected);
     EXPECT_EQ(names_3d, expected);
