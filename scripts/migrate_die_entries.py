@@ -19,7 +19,12 @@ takes no factor). The `Profile` subsection of `Revolved profile` and `Extruded p
 2D shape: its chain entries moved into the subsection of the shape its `Type` names (`Points`,
 `Points file` to `Polyline` or `Arc line`, `Fillet radii` to `Arc line`, `Center`, `Radius`,
 `Material inside` to `Circle`, the gear sizes to `Involute gear`; `Type`, `Closed` and
-`Extend ends` stay). Prints what it changed; files without such entries are left alone.
+`Extend ends` stay). The motion entries of `Contact/Die N/Motion` moved into one subsection per
+motion: `Translation`, `Rotation`, `Pivot` to `Prescribed`; `Workpiece center`, the rolling radii,
+`Initial center distance`, `Initial line angle`, `Direction`, `Rolling factor`, `Revolution
+angle`, `Slip angle`, `Feed` to `Rolling`; `Axis` to `Rolling` when the block sets `Type =
+rolling`, otherwise to `Prescribed` (`Type` stays). Prints what it changed; files without such
+entries are left alone.
 """
 
 import re
@@ -62,6 +67,24 @@ OLD_PROFILE_GEAR_DEFAULTS = [("Number of teeth", "20"), ("Diametral pitch", "0")
 FRICTION_TARGETS = {
     "Friction coefficient": (("Coulomb", "Coulomb capped by shear"), "Coulomb"),
     "Friction factor": (("Tresca", "Coulomb capped by shear", "Levanov"), "Tresca"),
+}
+
+# the entries of `Contact/Die N/Motion` that moved into the subsection of their motion type
+MOTION_MOVED = {
+    "Translation": "Prescribed",
+    "Rotation": "Prescribed",
+    "Pivot": "Prescribed",
+    "Axis": None,  # Prescribed or Rolling
+    "Workpiece center": "Rolling",
+    "Workpiece rolling radius": "Rolling",
+    "Die rolling radius": "Rolling",
+    "Initial center distance": "Rolling",
+    "Initial line angle": "Rolling",
+    "Direction": "Rolling",
+    "Rolling factor": "Rolling",
+    "Revolution angle": "Rolling",
+    "Slip angle": "Rolling",
+    "Feed": "Rolling",
 }
 
 SUBSECTION = re.compile(r"^(\s*)subsection\s+(.*?)\s*(#.*)?$")
@@ -185,7 +208,15 @@ def migrate(lines, name):
 
     out, changed_profiles = migrate_blocks(out, name, lambda b: b == "Profile", profile_target,
                                            profile_defaults)
-    return out, changed + changed_profiles
+    def motion_target(entry, settings, block):
+        if entry not in MOTION_MOVED:
+            return None
+        if MOTION_MOVED[entry] is not None:
+            return MOTION_MOVED[entry]
+        return "Rolling" if settings.get("Type") == "rolling" else "Prescribed"
+
+    out, changed_motions = migrate_blocks(out, name, lambda b: b == "Motion", motion_target)
+    return out, changed + changed_profiles + changed_motions
 
 
 def main():

@@ -46,8 +46,8 @@ case "$SCENE" in
     DEFAULTS=("1 2 3" "144 288 576" 2)
     SCENE_OPTIONS=(
       --step-set "Loading/End time = {n + 8}" --step-set "Loading/Number of steps = {n + 8}"
-      --step-set "Contact/Die 0/Motion/Revolution angle = t <= 4 ? 0 : (t <= {n + 4} ? {360 / n} * (t - 4) : 360)"
-      --step-set "Contact/Die 0/Motion/Feed = t <= 4 ? 0.762 * t / 4 : (t <= {n + 4} ? 0.762 : 0.762 - 1.062 * (t - {n + 4}) / 4)"
+      --step-set "Contact/Die 0/Motion/Rolling/Revolution angle = t <= 4 ? 0 : (t <= {n + 4} ? {360 / n} * (t - 4) : 360)"
+      --step-set "Contact/Die 0/Motion/Rolling/Feed = t <= 4 ? 0.762 * t / 4 : (t <= {n + 4} ? 0.762 : 0.762 - 1.062 * (t - {n + 4}) / 4)"
       --time-column die_roll_revolution
       --history "F_mean=mean(60,300):die_roll_force_magnitude"
       --profile "lobe=profile_*.csv:angle:radial_displacement:max"

@@ -14,7 +14,7 @@ depends on where that edge falls between the nodes. Two readings per run:
 
 A face of the ring mesh has its vertices at multiples of its angular length (the coarse ring
 starts at 0 degrees), so a profile point at angle a with spacing h is a vertex when a / (2 h) is
-an integer. Rotating the die start (Contact/Die 0/Motion/Initial line angle) rotates the exact
+an integer. Rotating the die start (Contact/Die 0/Motion/Rolling/Initial line angle) rotates the exact
 solution without changing it, so the spread of a level's runs over the die start is a
 discretisation error of that level, and their mean is the level's value.
 

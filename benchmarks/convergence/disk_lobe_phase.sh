@@ -30,9 +30,9 @@ for L in $LEVELS; do
       --set "Adaptivity/Maximum level=$L" --set "Adaptivity/Initial refinement cycles=$L" \
       --set "Adaptivity/Interval=$((8 * n / 576))" --set "Output/Interval=$((48 * n / 576))" \
       --set "Loading/End time = $((n + 8))" --set "Loading/Number of steps = $((n + 8))" \
-      --set "Contact/Die 0/Motion/Initial line angle = $(/usr/bin/python3 -c "print(90 + $shift_deg)")" \
-      --set "Contact/Die 0/Motion/Revolution angle = t <= 4 ? 0 : (t <= $((n + 4)) ? $(/usr/bin/python3 -c "print(360 / $n)") * (t - 4) : 360)" \
-      --set "Contact/Die 0/Motion/Feed = t <= 4 ? 0.762 * t / 4 : (t <= $((n + 4)) ? 0.762 : 0.762 - 1.062 * (t - $((n + 4))) / 4)" \
+      --set "Contact/Die 0/Motion/Rolling/Initial line angle = $(/usr/bin/python3 -c "print(90 + $shift_deg)")" \
+      --set "Contact/Die 0/Motion/Rolling/Revolution angle = t <= 4 ? 0 : (t <= $((n + 4)) ? $(/usr/bin/python3 -c "print(360 / $n)") * (t - 4) : 360)" \
+      --set "Contact/Die 0/Motion/Rolling/Feed = t <= 4 ? 0.762 * t / 4 : (t <= $((n + 4)) ? 0.762 : 0.762 - 1.062 * (t - $((n + 4))) / 4)" \
       > "$out.log" 2>&1
   done
 done

@@ -9,7 +9,7 @@ residual radial displacement of the rim after unloading (trough = smallest, lobe
 the last profile_NNNN.csv), the largest and the final temperature of the disk, and the CPU time.
 
 Usage: benchmarks/disk_rolling/heating.py AUSROLL WORK [--set ENTRY=VALUE ...] (the --set entries go to the
-heated run, e.g. --set "Contact/Die 0/Motion/Revolution angle=..." for another speed)
+heated run, e.g. --set "Contact/Die 0/Motion/Rolling/Revolution angle=..." for another speed)
 """
 
 import argparse

@@ -55,9 +55,9 @@ def timeline(n_roll, feed_steps=4, unload_steps=4, feed=0.762, retract=-0.3):
     t2 = feed_steps + n_roll
     t3 = t2 + unload_steps
     return [
-        f"Contact/Die 0/Motion/Revolution angle = t <= {t1} ? 0 : (t <= {t2} ? "
+        f"Contact/Die 0/Motion/Rolling/Revolution angle = t <= {t1} ? 0 : (t <= {t2} ? "
         f"{360.0 / n_roll} * (t - {t1}) : 360)",
-        f"Contact/Die 0/Motion/Feed = t <= {t1} ? {feed} * t / {t1} : (t <= {t2} ? {feed} : "
+        f"Contact/Die 0/Motion/Rolling/Feed = t <= {t1} ? {feed} * t / {t1} : (t <= {t2} ? {feed} : "
         f"{feed} - {feed - retract} * (t - {t2}) / {unload_steps})",
         f"Loading/End time = {t3}",
         f"Loading/Number of steps = {t3}",

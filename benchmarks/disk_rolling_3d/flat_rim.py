@@ -23,8 +23,8 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 ANGLES = list(range(60, 151, 5))
 TIMELINE = [
     "Loading/End time = 16", "Loading/Number of steps = 16", "Loading/Predictor = none",
-    "Contact/Die 0/Motion/Revolution angle = t <= 4 ? 0 : (t <= 12 ? 1.25 * (t - 4) : 10)",
-    "Contact/Die 0/Motion/Feed = t <= 4 ? 0.762 * t / 4 : "
+    "Contact/Die 0/Motion/Rolling/Revolution angle = t <= 4 ? 0 : (t <= 12 ? 1.25 * (t - 4) : 10)",
+    "Contact/Die 0/Motion/Rolling/Feed = t <= 4 ? 0.762 * t / 4 : "
     "(t <= 12 ? 0.762 : 0.762 - 1.062 * (t - 12) / 4)",
     "Geometry/Ring/Cells around = 48",
 ]

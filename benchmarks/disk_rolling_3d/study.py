@@ -31,8 +31,8 @@ ANGLES = list(range(60, 151, 5))
 HALF = 12.7
 TIMELINE = [
     "Loading/End time = 40", "Loading/Number of steps = 40", "Loading/Predictor = none",
-    "Contact/Die 0/Motion/Revolution angle = t <= 4 ? 0 : (t <= 36 ? 1.25 * (t - 4) : 40)",
-    "Contact/Die 0/Motion/Feed = t <= 4 ? 0.762 * t / 4 : "
+    "Contact/Die 0/Motion/Rolling/Revolution angle = t <= 4 ? 0 : (t <= 36 ? 1.25 * (t - 4) : 40)",
+    "Contact/Die 0/Motion/Rolling/Feed = t <= 4 ? 0.762 * t / 4 : "
     "(t <= 36 ? 0.762 : 0.762 - 1.062 * (t - 36) / 4)",
 ]
 

@@ -64,8 +64,8 @@ def main():
     for s in a.factors:
         d = 0.01 / s   # feed and withdrawal time
         r = 0.1 / s    # rolling time
-        timing = [f"Contact/Die 0/Motion/Revolution angle=-8 + 14 * min(max(t - {d}, 0) / {r}, 1)",
-                  f"Contact/Die 0/Motion/Feed=0.1 * min(min(t / {d}, 1), max(({2 * d + r} - t) / {d}, 0))",
+        timing = [f"Contact/Die 0/Motion/Rolling/Revolution angle=-8 + 14 * min(max(t - {d}, 0) / {r}, 1)",
+                  f"Contact/Die 0/Motion/Rolling/Feed=0.1 * min(min(t / {d}, 1), max(({2 * d + r} - t) / {d}, 0))",
                   f"Loading/End time={2 * d + r}"]
         hot = run(a.ausroll, mesh + timing, os.path.join(a.work, f"hot_{s}"))
         iso = run(a.ausroll, mesh + timing + off, os.path.join(a.work, f"iso_{s}"))

@@ -1,6 +1,9 @@
 #include <ausroll/adaptivity/adaptivity_parameters.h>
+#include <ausroll/adaptivity/refinement_indicators.h>
 #include <ausroll/core/exceptions.h>
 #include <ausroll/core/parse_utilities.h>
+
+#include <algorithm>
 
 namespace ausroll::adaptivity
 {
@@ -21,10 +24,9 @@ namespace ausroll::adaptivity
         "start and end of the first step).");
     prm.declare_entry("Indicators",
                       "contact",
-                      Patterns::MultipleSelection("Kelly|contact|plastic strain"),
-                      "Comma-separated combination: Kelly (jumps of the displacement gradient), "
-                      "contact (cells near a die now and at the next step), plastic strain "
-                      "(variation of the equivalent plastic strain within a cell).");
+                      Patterns::MultipleSelection(IndicatorRegistry::instance().selection()),
+                      "Comma-separated combination: " + IndicatorRegistry::instance().descriptions()
+                          + ".");
     prm.declare_entry("Refine fraction",
                       "0.3",
                       Patterns::Double(0., 1.),
@@ -98,13 +100,11 @@ namespace ausroll::adaptivity
     prm.enter_subsection("Adaptivity");
     interval = prm.get_integer("Interval");
     initial_cycles = prm.get_integer("Initial refinement cycles");
-    kelly = contact = plastic_strain = false;
-    for (const std::string &name : split_and_trim(prm.get("Indicators"), ','))
-    {
-      kelly = kelly || name == "Kelly";
-      contact = contact || name == "contact";
-      plastic_strain = plastic_strain || name == "plastic strain";
-    }
+    const std::vector<std::string> selected = split_and_trim(prm.get("Indicators"), ',');
+    indicators.clear();
+    for (const std::string &name : IndicatorRegistry::instance().names())
+      if (std::find(selected.begin(), selected.end(), name) != selected.end())
+        indicators.push_back(name);
     refine_fraction = prm.get_double("Refine fraction");
     coarsen_fraction = prm.get_double("Coarsen fraction");
     contact_band = prm.get_double("Contact band");

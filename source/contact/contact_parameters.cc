@@ -1,4 +1,5 @@
 #include <ausroll/contact/contact_parameters.h>
+#include <ausroll/contact/die_motion.h>
 #include <ausroll/contact/friction_law.h>
 #include <ausroll/core/exceptions.h>
 #include <ausroll/core/parse_utilities.h>
@@ -99,72 +100,10 @@ namespace ausroll::contact
       prm.enter_subsection("Motion");
       prm.declare_entry("Type",
                         "fixed",
-                        Patterns::Selection("fixed|prescribed|rolling"),
-                        "fixed; prescribed (Translation, Rotation about Pivot); rolling (planetary "
-                        "motion about the workpiece centre, NOFEAP section 4.1).");
-      prm.declare_entry("Translation",
-                        "0; 0",
-                        Patterns::Anything(),
-                        "prescribed: displacement of the pivot 'ux(t); uy(t)' (3D: "
-                        "'ux(t); uy(t); uz(t)') (mm).");
-      prm.declare_entry(
-          "Rotation",
-          "0",
-          Patterns::Anything(),
-          "prescribed: rotation angle phi(t) about the pivot (degrees, counter-clockwise; 3D: "
-          "about Axis through the pivot, right-hand rule).");
-      prm.declare_entry(
-          "Pivot",
-          "0, 0",
-          Patterns::Anything(),
-          "prescribed: rotation centre in die coordinates (3D: x, y, z; x, y means z = 0).");
-      prm.declare_entry("Axis",
-                        "0, 0, 1",
-                        Patterns::Anything(),
-                        "3D only: axis of the prescribed Rotation; rolling: direction of the "
-                        "workpiece axis through Workpiece center (the die axis is parallel), "
-                        "angles measured in the plane orthogonal to it from x (Axis = z) or "
-                        "from the coordinate axis least aligned with it.");
-      prm.declare_entry("Workpiece center",
-                        "0, 0",
-                        Patterns::Anything(),
-                        "rolling: centre O_G of the (non-rotating) workpiece (3D: a point of its "
-                        "axis, x, y, z; x, y means z = 0).");
-      prm.declare_entry("Workpiece rolling radius",
-                        "1",
-                        Patterns::Double(0.),
-                        "rolling: R_G, radius of pure rolling on the workpiece (pitch radius).");
-      prm.declare_entry("Die rolling radius",
-                        "1",
-                        Patterns::Double(0.),
-                        "rolling: R_D, radius of pure rolling on the die; the die spins by theta_D "
-                        "= (R_G/R_D) theta_G.");
-      prm.declare_entry("Initial center distance",
-                        "0",
-                        Patterns::Double(0.),
-                        "rolling: distance O_G to die centre at t = 0 (0: R_G + R_D).");
-      prm.declare_entry("Initial line angle",
-                        "90",
-                        Patterns::Double(),
-                        "rolling: angle of the line of centres at t = 0 (degrees from +x).");
-      prm.declare_entry("Direction",
-                        "1",
-                        Patterns::Integer(-1, 1),
-                        "rolling: +1 the die revolves counter-clockwise, -1 clockwise.");
-      prm.declare_entry(
-          "Rolling factor",
-          "1",
-          Patterns::Double(0., 1.),
-          "rolling: beta in theta_D = (R_G/R_D) theta_G + (1 - beta) theta_s (1: pure rolling).");
-      prm.declare_entry("Revolution angle",
-                        "0",
-                        Patterns::Anything(),
-                        "rolling: theta_G(t), revolution of the die centre about O_G (degrees).");
-      prm.declare_entry("Slip angle", "0", Patterns::Anything(), "rolling: theta_s(t) (degrees).");
-      prm.declare_entry("Feed",
-                        "0",
-                        Patterns::Anything(),
-                        "rolling: radial feed f(t) of the die towards O_G (mm).");
+                        Patterns::Selection(MotionRegistry::instance().selection()),
+                        "Motion of the die, its entries in the subsection of the same name: "
+                            + MotionRegistry::instance().descriptions() + ".");
+      MotionRegistry::instance().declare_subsections(prm);
       prm.leave_subsection();
       prm.leave_subsection();
     }
@@ -174,6 +113,8 @@ namespace ausroll::contact
   std::map<std::string, std::string> ContactParameters::moved_entries()
   {
     std::map<std::string, std::string> moved = surfaces::moved_die_entries(max_dies);
+    for (unsigned int k = 0; k < max_dies; ++k)
+      add_moved_motion_entries("Contact/Die " + std::to_string(k) + "/Motion/", moved);
     // the friction entries moved into the subsection of their law
     for (unsigned int k = 0; k < max_dies; ++k)
     {
@@ -236,35 +177,12 @@ namespace ausroll::contact
       d.search_distance = prm.get_double("Search distance");
 
       prm.enter_subsection("Motion");
-      const std::string motion = prm.get("Type");
-      d.motion = motion == "fixed"        ? MotionType::fixed
-                 : motion == "prescribed" ? MotionType::prescribed
-                                          : MotionType::rolling;
-      d.translation = prm.get("Translation");
-      d.rotation = prm.get("Rotation");
-      d.pivot = prm.get("Pivot");
-      d.workpiece_center = prm.get("Workpiece center");
-      d.axis = prm.get("Axis");
-      d.workpiece_radius = prm.get_double("Workpiece rolling radius");
-      d.die_radius = prm.get_double("Die rolling radius");
-      d.center_distance = prm.get_double("Initial center distance");
-      d.line_angle = prm.get_double("Initial line angle");
-      d.direction = prm.get_integer("Direction");
-      d.beta = prm.get_double("Rolling factor");
-      d.revolution = prm.get("Revolution angle");
-      d.slip = prm.get("Slip angle");
-      d.feed = prm.get("Feed");
+      d.motion_type = prm.get("Type");
+      const auto &motions = MotionRegistry::instance();
+      d.motion_path = motions.path(d.motion_type, path + "Motion/");
+      d.motion = motions.parse(d.motion_type, prm, path + "Motion/", input_directory, "Type");
       prm.leave_subsection();
       prm.leave_subsection();
-
-      // Semantic checks.
-      if (d.motion == MotionType::rolling)
-      {
-        require(
-            d.workpiece_radius > 0., path + "Motion/Workpiece rolling radius", "must be positive");
-        require(d.die_radius > 0., path + "Motion/Die rolling radius", "must be positive");
-        require(d.direction != 0, path + "Motion/Direction", "must be +1 or -1");
-      }
       dies.push_back(d);
     }
     prm.leave_subsection();

@@ -3,24 +3,21 @@
  * Implementation of die poses and die motions (see die_motion.h for the conventions).
  */
 #include <ausroll/contact/die_motion.h>
-#include <ausroll/contact/surfaces/frame_3d.h>
 #include <ausroll/core/exceptions.h>
+#include <ausroll/core/parse_utilities.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/numbers.h>
 
 #include <cmath>
+#include <sstream>
+#include <utility>
+#include <vector>
 
 namespace ausroll::contact
 {
   using dealii::Point;
   using dealii::Tensor;
-
-  namespace
-  {
-    /** Value of @p f at @p t, or 0 for an empty function. */
-    double evaluate(const TimeFunction &f, const double t)
-    {
-      return f ? f(t) : 0.0;
-    }
-  } // namespace
 
   // ------------------------------------------------------------------ DiePose
 
@@ -139,146 +136,89 @@ namespace ausroll::contact
     return pose(t1).to_global(X) - pose(t0).to_global(X);
   }
 
-  // ------------------------------------------------------------------ FixedPose
+  // ------------------------------------------------------------------ entries
 
-  template <int dim>
-  FixedPose<dim>::FixedPose(const DiePose<dim> &pose)
-      : fixed(pose)
+  TimeFunction
+  parse_time_function(const std::string &expression, const std::string &entry, const double scale)
   {
-  }
-
-  template <int dim>
-  DiePose<dim> FixedPose<dim>::pose(const double) const
-  {
-    return fixed;
-  }
-
-  template <int dim>
-  Tensor<1, dim> FixedPose<dim>::velocity(const double, const Point<dim> &) const
-  {
-    return Tensor<1, dim>();
-  }
-
-  template <int dim>
-  double FixedPose<dim>::angular_velocity(const double) const
-  {
-    return 0.0;
-  }
-
-  // ------------------------------------------------------------------ PrescribedMotion
-
-  template <int dim>
-  PrescribedMotion<dim>::PrescribedMotion(VectorTimeFunction<dim> translation,
-                                          TimeFunction            rotation,
-                                          const Point<dim>       &pivot)
-      : PrescribedMotion(std::move(translation), std::move(rotation), pivot, pivot)
-  {
-  }
-
-  template <int dim>
-  PrescribedMotion<dim>::PrescribedMotion(VectorTimeFunction<dim> translation,
-                                          TimeFunction            rotation,
-                                          const Point<dim>       &pivot,
-                                          const Point<dim>       &pivot_rest_position,
-                                          const Tensor<1, dim>   &axis)
-      : translation(std::move(translation))
-      , rotation(std::move(rotation))
-      , pivot(pivot)
-      , pivot_rest(pivot_rest_position)
-      , axis(axis)
-  {
-  }
-
-  template <int dim>
-  PrescribedMotion<dim> PrescribedMotion<dim>::constant_velocity(const Tensor<1, dim> &velocity)
-  {
-    return PrescribedMotion([velocity](const double t) { return velocity * t; }, TimeFunction());
-  }
-
-  template <int dim>
-  DiePose<dim> PrescribedMotion<dim>::pose(const double t) const
-  {
-    const Tensor<1, dim> u = translation ? translation(t) : Tensor<1, dim>();
-    return DiePose<dim>(pivot_rest + u, evaluate(rotation, t), pivot, axis);
-  }
-
-  // ------------------------------------------------------------------ RollingMotion
-
-  template <int dim>
-  RollingMotion<dim>::RollingMotion(const Data &data)
-      : d(data)
-      , a0(data.initial_center_distance.value_or(data.workpiece_radius + data.die_radius))
-  {
-    const std::string where = "Rolling motion";
-    require(d.workpiece_radius > 0.0, where, "the workpiece pitch radius must be positive");
-    require(d.die_radius > 0.0, where, "the die pitch radius must be positive");
-    require(a0 > 0.0, where, "the initial centre distance must be positive");
-    require(d.direction == 1 || d.direction == -1, where, "the direction must be +1 or -1");
-    require(d.beta >= 0.0 && d.beta <= 1.0, where, "the rolling ratio beta must lie in [0, 1]");
-    if constexpr (dim == 3)
+    require_expression_length(expression, entry);
+    auto parser = std::make_shared<dealii::FunctionParser<1>>(1);
+    try
     {
-      const surfaces::Frame3D frame(
-          Point<3>(), d.axis.norm() > 0.0 ? d.axis : Tensor<1, 3>({0., 0., 1.}), d.reference);
-      d.axis = frame.basis(2);
-      e1 = frame.basis(0);
-      e2 = frame.basis(1);
+      // deal.II parses at the first evaluation
+      parser->initialize("x,t", expression, {{"pi", dealii::numbers::PI}}, true);
+      parser->set_time(0.);
+      parser->value(Point<1>());
     }
+    catch (...)
+    {
+      throw InputError(entry + ": cannot parse '" + abbreviate(expression) + "' (variable: t)");
+    }
+    // A value that is not finite (t/0, sqrt(-1-t), an overflow) is an input error naming the
+    // entry wherever it is met: at t = 0 here, at the die check's times before the run.
+    const TimeFunction f = [parser, scale, expression, entry](const double t)
+    {
+      parser->set_time(t);
+      const double value = scale * parser->value(Point<1>());
+      if (!std::isfinite(value))
+      {
+        std::ostringstream msg;
+        msg << entry << ": '" << abbreviate(expression) << "' is not finite ("
+            << (std::isnan(value) ? "nan"
+                : value > 0       ? "inf"
+                                  : "-inf")
+            << ") at t = " << t;
+        throw InputError(msg.str());
+      }
+      return value;
+    };
+    f(0.);
+    return f;
   }
 
   template <int dim>
-  double RollingMotion<dim>::line_angle(const double t) const
+  Point<dim> parse_die_point(const std::string &text, const std::string &entry)
   {
-    return d.initial_line_angle + d.direction * evaluate(d.revolution_angle, t);
+    if constexpr (dim == 3)
+      if (split_and_trim(text, ',').size() == 2)
+      {
+        const Point<2> p = parse_point<2>(text, entry);
+        return Point<3>(p[0], p[1], 0.);
+      }
+    return parse_point<dim>(text, entry);
   }
 
-  template <int dim>
-  double RollingMotion<dim>::center_distance(const double t) const
+  void add_moved_motion_entries(const std::string                  &motion_path,
+                                std::map<std::string, std::string> &moved)
   {
-    return a0 - evaluate(d.feed, t);
-  }
-
-  template <int dim>
-  Point<dim> RollingMotion<dim>::polar_point(const double r, const double psi) const
-  {
-    if constexpr (dim == 2)
-      return d.workpiece_center + Point<2>(r * std::cos(psi), r * std::sin(psi));
-    else
-      return d.workpiece_center + r * std::cos(psi) * e1 + r * std::sin(psi) * e2;
-  }
-
-  template <int dim>
-  Point<dim> RollingMotion<dim>::die_center(const double t) const
-  {
-    return polar_point(center_distance(t), line_angle(t));
-  }
-
-  template <int dim>
-  double RollingMotion<dim>::spin_angle(const double t) const
-  {
-    return d.workpiece_radius / d.die_radius * evaluate(d.revolution_angle, t)
-           + (1.0 - d.beta) * evaluate(d.slip_angle, t);
-  }
-
-  template <int dim>
-  Point<dim> RollingMotion<dim>::pitch_point(const double t) const
-  {
-    return polar_point(d.workpiece_radius, line_angle(t));
-  }
-
-  template <int dim>
-  DiePose<dim> RollingMotion<dim>::pose(const double t) const
-  {
-    const double theta
-        = d.initial_die_angle + d.direction * (evaluate(d.revolution_angle, t) + spin_angle(t));
-    return DiePose<dim>(die_center(t), theta, Point<dim>(), d.axis);
+    // the flat list of `Contact/Die N/Motion` before the motion subsections
+    const std::vector<std::pair<std::string, std::vector<std::string>>> entries{
+        {"Translation", {"Prescribed"}},
+        {"Rotation", {"Prescribed"}},
+        {"Pivot", {"Prescribed"}},
+        {"Axis", {"Prescribed", "Rolling"}},
+        {"Workpiece center", {"Rolling"}},
+        {"Workpiece rolling radius", {"Rolling"}},
+        {"Die rolling radius", {"Rolling"}},
+        {"Initial center distance", {"Rolling"}},
+        {"Initial line angle", {"Rolling"}},
+        {"Direction", {"Rolling"}},
+        {"Rolling factor", {"Rolling"}},
+        {"Revolution angle", {"Rolling"}},
+        {"Slip angle", {"Rolling"}},
+        {"Feed", {"Rolling"}},
+    };
+    for (const auto &[entry, subsections] : entries)
+    {
+      std::string to;
+      for (const std::string &s : subsections)
+        to += (to.empty() ? "" : " or ") + ("`" + motion_path + s + "/" + entry + "`");
+      moved[motion_path + entry] = to;
+    }
   }
 
   template class DieMotion<2>;
   template class DieMotion<3>;
-  template class FixedPose<2>;
-  template class FixedPose<3>;
-  template class PrescribedMotion<2>;
-  template class PrescribedMotion<3>;
-  template class RollingMotion<2>;
-  template class RollingMotion<3>;
+  template Point<2> parse_die_point<2>(const std::string &, const std::string &);
+  template Point<3> parse_die_point<3>(const std::string &, const std::string &);
 } // namespace ausroll::contact

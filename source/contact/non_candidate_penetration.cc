@@ -153,6 +153,38 @@ namespace ausroll::contact
   }
 
   template <int dim>
+  typename NonCandidatePenetration<dim>::Penetration
+  NonCandidatePenetration<dim>::boundary_to_add(const ContactOperator<dim>          &contact,
+                                                const TrilinosWrappers::MPI::Vector &u,
+                                                const double                         time,
+                                                const TrilinosWrappers::MPI::Vector &u_start,
+                                                const double                         t_start,
+                                                const double                         tolerance,
+                                                const std::set<unsigned int>        &held,
+                                                const MPI_Comm                       comm) const
+  {
+    Penetration p = find_crossing(contact, u, time, u_start, t_start, tolerance, comm);
+    if (p.found && held.count(p.boundary) != 0)
+      p.found = false;
+    return p;
+  }
+
+  template <int dim>
+  std::string NonCandidatePenetration<dim>::added_note(const Penetration &p,
+                                                       const std::string &die_name,
+                                                       const unsigned int step,
+                                                       const double       time)
+  {
+    std::ostringstream msg;
+    msg << describe(p, die_name, step, time)
+        << "; it is now a candidate of that die (Contact/Penetrating boundaries = add), and the "
+           "step is solved again. Add "
+        << p.boundary << " to Contact/Die " << p.die
+        << "/Candidate boundaries to say so in the input";
+    return msg.str();
+  }
+
+  template <int dim>
   std::string NonCandidatePenetration<dim>::check(const ContactOperator<dim>          &contact,
                                                   const TrilinosWrappers::MPI::Vector &u,
                                                   const double                         time,

@@ -1,15 +1,7 @@
 #include <ausroll/contact/rigid_die.h>
 #include <ausroll/core/exceptions.h>
-#include <ausroll/core/parse_utilities.h>
 
-#include <deal.II/base/function_parser.h>
-#include <deal.II/base/numbers.h>
-
-#include <cmath>
 #include <limits>
-#include <map>
-#include <sstream>
-#include <stdexcept>
 
 namespace ausroll::contact
 {
@@ -17,132 +9,6 @@ namespace ausroll::contact
 
   namespace
   {
-    constexpr double degree = numbers::PI / 180.;
-
-    /** A scalar function of t parsed from @p expression; InputError names @p entry. */
-    TimeFunction
-    time_function(const std::string &expression, const std::string &entry, const double scale = 1.)
-    {
-      require_expression_length(expression, entry);
-      auto parser = std::make_shared<FunctionParser<1>>(1);
-      try
-      {
-        // deal.II parses at the first evaluation
-        parser->initialize("x,t", expression, {{"pi", numbers::PI}}, true);
-        parser->set_time(0.);
-        parser->value(Point<1>());
-      }
-      catch (...)
-      {
-        throw InputError(entry + ": cannot parse '" + abbreviate(expression) + "' (variable: t)");
-      }
-      // A value that is not finite (t/0, sqrt(-1-t), an overflow) is an input error naming the
-      // entry wherever it is met: at t = 0 here, at the die check's times before the run.
-      const TimeFunction f = [parser, scale, expression, entry](const double t)
-      {
-        parser->set_time(t);
-        const double value = scale * parser->value(Point<1>());
-        if (!std::isfinite(value))
-        {
-          std::ostringstream msg;
-          msg << entry << ": '" << abbreviate(expression) << "' is not finite ("
-              << (std::isnan(value) ? "nan"
-                  : value > 0       ? "inf"
-                                    : "-inf")
-              << ") at t = " << t;
-          throw InputError(msg.str());
-        }
-        return value;
-      };
-      f(0.);
-      return f;
-    }
-
-    /** Read the point entry @p text of @p dim coordinates (3D also "x, y": z = 0, so that the
-        2D defaults serve); InputError naming @p entry. */
-    template <int dim>
-    Point<dim> read_point(const std::string &text, const std::string &entry)
-    {
-      if constexpr (dim == 3)
-        if (split_and_trim(text, ',').size() == 2)
-        {
-          const Point<2> p = parse_point<2>(text, entry);
-          return Point<3>(p[0], p[1], 0.);
-        }
-      return parse_point<dim>(text, entry);
-    }
-
-    template <int dim>
-    std::unique_ptr<DieMotion<dim>> make_motion(const DieParameters &p, const std::string &path)
-    {
-      Tensor<1, dim> axis;
-      if constexpr (dim == 3)
-      {
-        if (p.motion != MotionType::fixed)
-        {
-          axis = Tensor<1, 3>(read_point<3>(p.axis, path + "Motion/Axis"));
-          require(axis.norm() > 0., path + "Motion/Axis", "must be a nonzero vector");
-        }
-      }
-      switch (p.motion)
-      {
-        case MotionType::fixed:
-          return std::make_unique<FixedPose<dim>>();
-        case MotionType::prescribed:
-        {
-          const std::vector<std::string> u = split_and_trim(p.translation, ';');
-          require(u.size() == dim,
-                  path + "Motion/Translation",
-                  dim == 2 ? "needs two expressions 'ux(t); uy(t)'"
-                           : "needs three expressions 'ux(t); uy(t); uz(t)' in a 3D run");
-          std::vector<TimeFunction> components;
-          for (unsigned int c = 0; c < dim; ++c)
-            components.push_back(time_function(u[c], path + "Motion/Translation"));
-          const TimeFunction phi = time_function(p.rotation, path + "Motion/Rotation", degree);
-          const Point<dim>   pivot = read_point<dim>(p.pivot, path + "Motion/Pivot");
-          return std::make_unique<PrescribedMotion<dim>>(
-              [components](const double t)
-              {
-                Tensor<1, dim> v;
-                for (unsigned int c = 0; c < dim; ++c)
-                  v[c] = components[c](t);
-                return v;
-              },
-              phi,
-              pivot,
-              pivot,
-              axis);
-        }
-        case MotionType::rolling:
-        {
-          typename RollingMotion<dim>::Data data;
-          data.workpiece_center
-              = read_point<dim>(p.workpiece_center, path + "Motion/Workpiece center");
-          data.axis = axis;
-          data.workpiece_radius = p.workpiece_radius;
-          data.die_radius = p.die_radius;
-          if (p.center_distance > 0.)
-            data.initial_center_distance = p.center_distance;
-          data.initial_line_angle = p.line_angle * degree;
-          data.direction = p.direction;
-          data.beta = p.beta;
-          data.revolution_angle
-              = time_function(p.revolution, path + "Motion/Revolution angle", degree);
-          data.slip_angle = time_function(p.slip, path + "Motion/Slip angle", degree);
-          data.feed = time_function(p.feed, path + "Motion/Feed");
-          try
-          {
-            return std::make_unique<RollingMotion<dim>>(data);
-          }
-          catch (const std::exception &e)
-          {
-            throw InputError(path + "Motion: " + e.what());
-          }
-        }
-      }
-      return nullptr;
-    }
-
     /** The surface of die @p p in a run of dimension @p dim; InputError naming `Shape` if the
         shape has the other dimension. */
     template <int dim>
@@ -180,14 +46,9 @@ namespace ausroll::contact
       , shape(make_surface<dim>(p, "Contact/Die " + std::to_string(index) + "/"))
       , candidates(p.candidate_boundaries.begin(), p.candidate_boundaries.end())
   {
-    const std::string path = "Contact/Die " + std::to_string(index) + "/";
     if constexpr (dim == 2)
-    {
       profile = std::make_unique<DieProfile>(*shape);
-      read_point<2>(p.pivot, path + "Motion/Pivot"); // checked in every 2D run, as before
-      read_point<2>(p.workpiece_center, path + "Motion/Workpiece center");
-    }
-    motion = make_motion<dim>(p, path);
+    motion = create_motion<dim>(*p.motion, p.motion_path);
   }
 
   Projection DieProfile::project(const Point<2> &x, const double max_distance) const

@@ -1,3 +1,4 @@
+#include <ausroll/contact/contact_operator.h>
 #include <ausroll/io/run_log.h>
 
 #include <deal.II/base/mpi.h>
@@ -194,4 +195,41 @@ namespace ausroll::io
                 << std::endl;
     return true;
   }
+  void write_run_end(const OutputParameters     &output,
+                     const unsigned int          rank,
+                     const RunTotals            &totals,
+                     const solver::SolveCount   &solve_count,
+                     const unsigned int          steps,
+                     const double                wall_seconds,
+                     dealii::TimerOutput        &timer,
+                     dealii::ConditionalOStream &regression_log,
+                     const MPI_Comm              comm)
+  {
+    // the summary: also at Verbosity = quiet
+    dealii::ConditionalOStream summary_log(
+        std::cout,
+        prints(output.verbosity, {Verbosity::quiet, Verbosity::normal, Verbosity::verbose}, rank));
+    write_run_summary(summary_log,
+                      totals,
+                      solve_count.per_step.size(),
+                      solve_count.accepted(),
+                      solve_count.median(),
+                      solve_count.discarded,
+                      wall_seconds,
+                      comm);
+    write_run_footer(summary_log, steps, wall_seconds, output.directory, output.write_vtu);
+    if (output.verbosity != Verbosity::regression && output.verbosity != Verbosity::quiet)
+      timer.print_summary();
+    regression_log << "finished: " << steps << " steps" << std::endl;
+  }
+
+  template <int dim>
+  void RunTotals::record_die_forces(const contact::ContactOperator<dim> &contact, const double time)
+  {
+    for (unsigned int k = 0; k < contact.n_dies(); ++k)
+      record_force(k, contact.die(k).name, contact.die_contact(k).force.norm(), time);
+  }
+
+  template void RunTotals::record_die_forces(const contact::ContactOperator<2> &, double);
+  template void RunTotals::record_die_forces(const contact::ContactOperator<3> &, double);
 } // namespace ausroll::io

@@ -57,6 +57,15 @@ namespace ausroll::mechanics
     prm.leave_subsection();
   }
 
+  std::set<unsigned int> BoundaryConditionParameters::held_boundaries() const
+  {
+    std::set<unsigned int> held;
+    for (const BoundaryCondition &c : conditions)
+      if (c.type == BoundaryConditionType::fixed || c.type == BoundaryConditionType::displacement)
+        held.insert(c.id);
+    return held;
+  }
+
   void BoundaryConditionParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Boundary conditions");

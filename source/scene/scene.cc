@@ -1,10 +1,7 @@
-#include <ausroll/adaptivity/refinement_indicators.h>
 #include <ausroll/core/exceptions.h>
 #include <ausroll/geometry/workpiece.h>
 #include <ausroll/io/output_directory.h>
-#include <ausroll/io/postprocess/phases.h>
 #include <ausroll/io/postprocess/standard_set.h>
-#include <ausroll/io/postprocess/temperature.h>
 #include <ausroll/io/run_checkpoint.h>
 #include <ausroll/io/run_log.h>
 #include <ausroll/mechanics/distortion_check.h>
@@ -12,7 +9,6 @@
 #include <ausroll/scene/setup_checks.h>
 
 #include <algorithm>
-#include <tuple>
 
 #include <deal.II/base/mpi.h>
 
@@ -123,109 +119,21 @@ namespace ausroll::scene
   }
 
   template <int dim>
-  void Scene<dim>::setup_dof_dependents()
-  {
-    linear_solver.set_rigid_body_modes(system.dof_handler, system.mapping);
-    contact.setup(
-        system.dof_handler,
-        system.mapping,
-        [this](const Point<dim> &x) { return kinematics.volume_factor(x); },
-        system.min_cell_diameter);
-    if (contact.active())
-    {
-      // The curvature tangent is planar (2D only).
-      if constexpr (dim == 2)
-        curved_die_tangent.setup(system.mapping, system.dof_handler);
-      non_candidate_penetration.setup(system.mapping, system.dof_handler);
-    }
-  }
-
-  template <int dim>
   void Scene<dim>::setup_postprocessing()
   {
     if (!postprocessors)
     {
-      postprocessors
-          = io::make_standard_postprocessors<dim>(parameters.output,
-                                                  parameters.postprocess,
-                                                  parameters.loading.end_time,
-                                                  parameters.material.yield_stress.min_value(),
-                                                  parameters.model.quadrature_points,
-                                                  comm,
-                                                  thermal != nullptr);
-      if (thermal) // its columns after the mechanical ones
-        postprocessors->add(std::make_unique<io::postprocess::TemperatureField<dim>>());
-      if (parameters.phases.enabled)
-        postprocessors->add(std::make_unique<io::postprocess::PhaseFractions<dim>>(
-            parameters.phases.has_bainite()));
+      const io::PostprocessorContext context{parameters.output,
+                                             parameters.postprocess,
+                                             parameters.loading.end_time,
+                                             parameters.material.yield_stress.min_value(),
+                                             parameters.model.quadrature_points,
+                                             thermal != nullptr,
+                                             parameters.phases.enabled,
+                                             parameters.phases.has_bainite()};
+      postprocessors = io::make_standard_postprocessors<dim>(context, comm);
     }
     postprocessors->initialize(postprocess_input());
-  }
-
-  template <int dim>
-  bool Scene<dim>::adapt_mesh(const double next_time)
-  {
-    const adaptivity::AdaptivityParameters &p = parameters.adaptivity;
-    unsigned int                            n_refined = 0, n_coarsened = 0;
-    {
-      TimerOutput::Scope                 scope(*timer, "adaptivity");
-      const adaptivity::DieDistance<dim> die_distance
-          = contact.active() ? adaptivity::DieDistance<dim>(
-                [this, next_time](const Point<dim> &x) {
-                  return std::min(contact.distance_to_dies(x, time),
-                                  contact.distance_to_dies(x, next_time));
-                })
-                             : adaptivity::DieDistance<dim>();
-      if (!adaptivity::mark_cells(p,
-                                  system.triangulation,
-                                  system.mapping,
-                                  system.dof_handler,
-                                  system.solution_ghosted,
-                                  system.material_points,
-                                  die_distance))
-        return false;
-
-      // Carry displacement, material points and contact statuses to the new mesh.
-      const std::vector<double> contact_state = contact.pack_state();
-      linear_solver.matrix_pattern_changed();
-      // (the counts for the log: cells split and cells merged into their parents)
-      std::tie(n_refined, n_coarsened) = system.execute_refinement(
-          [this]()
-          {
-            point_transfer->prepare();
-            if (thermal)
-              thermal->prepare_refinement();
-          },
-          [this]()
-          {
-            setup_dof_dependents();
-            point_transfer->unpack();
-            if (thermal)
-            {
-              thermal->setup();
-              thermal->finish_refinement();
-            }
-          });
-      system.rebase_material_points(*assembler, *model);
-      contact.unpack_state(contact_state);
-      setup_postprocessing();
-    }
-    log << "  mesh adapted: " << system.triangulation.n_global_active_cells() << " cells, "
-        << system.dof_handler.n_dofs() << " DoFs (" << n_refined << " cells refined, "
-        << n_coarsened << " coarsened)" << std::endl;
-
-    // Before the first step (initial refinement cycles, t = 0) nothing has been solved yet: the
-    // interpolated state is the undeformed one and Newton would only chase round-off.
-    if (p.reequilibrate && time > 0.)
-    {
-      // Equilibrium on the new mesh at the same time (no load change).
-      const solver::NewtonResult result = newton.solve(*equilibrium, newton_log);
-      if (!result.converged)
-        throw RunFailure("re-equilibration after mesh adaptation at t = " + std::to_string(time)
-                         + " failed: " + result.reason);
-      commit_step(false); // the predictor's u_n-1 stays the last step's converged state
-    }
-    return true;
   }
 
   template <int dim>
@@ -310,29 +218,21 @@ namespace ausroll::scene
   {
     if (!contact.active() || !parameters.contact.add_penetrating_boundaries)
       return false;
-    const auto p = non_candidate_penetration.find_crossing(contact,
-                                                           system.solution_ghosted,
-                                                           time,
-                                                           system.step_start,
-                                                           step_start_time,
-                                                           1e-2 * system.min_cell_diameter,
-                                                           comm);
+    const auto p = non_candidate_penetration.boundary_to_add(
+        contact,
+        system.solution_ghosted,
+        time,
+        system.step_start,
+        step_start_time,
+        1e-2 * system.min_cell_diameter,
+        parameters.boundary_conditions.held_boundaries(),
+        comm);
     if (!p.found)
       return false;
-    // A boundary with prescribed displacements (a symmetry axis, a clamp) is not made a
-    // contact candidate: its constraints would conflict; the warning of accept_step() names it.
-    for (const auto &c : parameters.boundary_conditions.conditions)
-      if (c.id == p.boundary
-          && (c.type == mechanics::BoundaryConditionType::fixed
-              || c.type == mechanics::BoundaryConditionType::displacement))
-        return false;
     log << "  note: "
-        << contact::NonCandidatePenetration<dim>::describe(
+        << contact::NonCandidatePenetration<dim>::added_note(
                p, contact.die(p.die).name, step_number + 1, time)
-        << "; it is now a candidate of that die (Contact/Penetrating boundaries = add), and the "
-           "step is solved again. Add "
-        << p.boundary << " to Contact/Die " << p.die
-        << "/Candidate boundaries to say so in the input" << std::endl;
+        << std::endl;
     // The committed statuses carry over to the new set of contact nodes by position.
     const std::vector<double> state = contact.pack_state();
     contact.add_candidate_boundary(p.die, p.boundary);
@@ -384,13 +284,8 @@ namespace ausroll::scene
     io::write_regression_line(regression_log, step_number, row);
 
     run_totals.cutbacks += step.cutbacks;
-    if (contact.active())
-      for (unsigned int k = 0; k < contact.n_dies(); ++k)
-      {
-        const auto c = contact.die_contact(k);
-        die_touched[k] = die_touched[k] || c.n_stick + c.n_slip > 0;
-        run_totals.record_force(k, contact.die(k).name, c.force.norm(), step.time);
-      }
+    run_totals.record_die_forces(contact, step.time);
+    die_touches.record(contact);
 
     check_distortion();
     if (contact.active())
@@ -471,7 +366,6 @@ namespace ausroll::scene
       write_output();
     }
 
-    die_touched.assign(contact.active() ? contact.n_dies() : 0, false);
     start_fraction = time / parameters.loading.end_time; // done before this process started
     eta.start(start_fraction, wall_clock.wall_time());
     smallest_extent = system.smallest_extent();
@@ -480,54 +374,21 @@ namespace ausroll::scene
     stepper.run(*this, time, dt, step_number);
     write_output();
 
-    // the summary: also at Verbosity = quiet
-    ConditionalOStream summary_log(
-        std::cout,
-        io::prints(parameters.output.verbosity,
-                   {Verbosity::quiet, Verbosity::normal, Verbosity::verbose},
-                   rank));
-    io::write_run_summary(summary_log,
-                          run_totals,
-                          stepper.solve_count.per_step.size(),
-                          stepper.solve_count.accepted(),
-                          stepper.solve_count.median(),
-                          stepper.solve_count.discarded,
-                          wall_clock.wall_time(),
-                          comm);
-    io::write_run_footer(summary_log,
-                         step_number,
-                         wall_clock.wall_time(),
-                         parameters.output.directory,
-                         parameters.output.write_vtu);
-    if (parameters.output.verbosity != io::Verbosity::regression
-        && parameters.output.verbosity != io::Verbosity::quiet)
-      timer->print_summary();
-    regression_log << "finished: " << step_number << " steps" << std::endl;
+    io::write_run_end(parameters.output,
+                      rank,
+                      run_totals,
+                      stepper.solve_count,
+                      step_number,
+                      wall_clock.wall_time(),
+                      *timer,
+                      regression_log,
+                      comm);
 
-    // A die that never touched the workpiece is a set-up error (wrong position, feed or
-    // direction): everything is written, but the run must not look like a forming result. If no
-    // die touched, the run fails; a die untouched beside others that did (a shortened run of a
-    // scene whose later die comes in later) is a warning.
-    if (!resuming && !die_touched.empty())
-    {
-      const bool any_touched
-          = std::find(die_touched.begin(), die_touched.end(), true) != die_touched.end();
-      for (unsigned int k = 0; k < die_touched.size(); ++k)
-        if (!die_touched[k])
-        {
-          const std::string message
-              = "Contact/Die " + std::to_string(k) + " (" + contact.die(k).name
-                + ") never touched the workpiece: no node was in contact with it at the end of "
-                  "any of the "
-                + std::to_string(step_number)
-                + " steps, so its force is zero throughout (the output is complete); check its "
-                  "position and Contact/Die "
-                + std::to_string(k) + "/Motion";
-          if (!any_touched)
-            throw RunFailure(message);
-          log << "warning: " << message << std::endl;
-        }
-    }
+    // A die that never touched the workpiece (contact/die_touch.h): the run fails if no die
+    // touched, a die untouched beside others that did is a warning.
+    if (!resuming)
+      for (const std::string &warning : die_touches.untouched_warnings(contact, step_number))
+        log << "warning: " << warning << std::endl;
   }
 
   template class Scene<2>;

@@ -8,7 +8,7 @@ Usage:
 
 slice: the 3D set-up against the 2D scene. PRM_3D is PRM_2D with the tooth extruded over a 1 mm
   slice with u_z = 0 on both z faces and the 3D spur die (extruded involute profile, rolling about
-  Motion/Axis = z). The 3D discrete problem is the 2D one repeated along z (the mesh is extruded,
+  Motion/Rolling/Axis = z). The 3D discrete problem is the 2D one repeated along z (the mesh is extruded,
   the die does not vary along z), so every history column both runs write agrees within 1e-8 of
   the column's largest value (only the Newton tolerance and round-off separate them), except
   cells, dofs, wall_seconds and the node counts (three nodes through the slice per 2D node), contact

@@ -481,7 +481,7 @@ def main():
                   "Output/Overwrite=true"]
     if "conductance" in cases:
         run(ausroll, slide, thermal_on + [
-            "Contact/Die 0/Motion/Translation=0; -0.011*min(t,1)", "Loading/End time=100",
+            "Contact/Die 0/Motion/Prescribed/Translation=0; -0.011*min(t,1)", "Loading/End time=100",
             "Loading/Number of steps=20", "Thermal/Contact conductance=10", "Thermal/Die temperatures=200",
             "Thermal/Number of conditions=1", "Thermal/Condition 0/Boundary id=2",
             "Thermal/Condition 0/Type=temperature", "Thermal/Condition 0/Value=20"], "conductance")
@@ -499,7 +499,7 @@ def main():
 
     if "friction" in cases:
         run(ausroll, slide, thermal_on + [
-            "Contact/Die 0/Motion/Translation=0.1*max(t-1,0); -0.011*min(t,1)", "Loading/End time=4",
+            "Contact/Die 0/Motion/Prescribed/Translation=0.1*max(t-1,0); -0.011*min(t,1)", "Loading/End time=4",
             "Loading/Number of steps=16"], "friction")
         row = last("friction")
         fy = [row[c] for c in row if c.endswith("force_y")][0]

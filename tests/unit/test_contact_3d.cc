@@ -352,8 +352,8 @@ namespace
            + std::to_string(mu)
            + "\nend\nset Candidate boundaries = 4\nsubsection Plane\nset Point = 0, 0, 0\n"
              "set Normal = 0, 0, 1\nend\nsubsection Motion\nset Type = prescribed\n"
-             "set Translation = "
-           + translation + "\nend\nend\nend\n";
+             "subsection Prescribed\nset Translation = "
+           + translation + "\nend\nend\nend\nend\n";
   }
 
   const std::string held_top = "subsection Boundary conditions\nset Number of conditions = 1\n"
@@ -452,14 +452,16 @@ namespace
                              + "\nsubsection Condition 0\nset Boundary id = 3\nset Type = fixed\n"
                                "end\n";
     if constexpr (dim == 2)
-      contact += "set Shape = flat\nsubsection Flat\nset Point = 0, 0\nset Normal = 0, 1\nend\n"
-                 "subsection Motion\nset Type = prescribed\nset Translation = "
-                 + slide + "; " + press + "\nend\nend\nend\n";
+      contact
+          += "set Shape = flat\nsubsection Flat\nset Point = 0, 0\nset Normal = 0, 1\nend\n"
+             "subsection Motion\nset Type = prescribed\nsubsection Prescribed\nset Translation = "
+             + slide + "; " + press + "\nend\nend\nend\nend\n";
     else
     {
       contact += "set Shape = plane\nsubsection Plane\nset Point = 0, 0, 0\nset Normal = 0, 1, 0\n"
-                 "end\nsubsection Motion\nset Type = prescribed\nset Translation = "
-                 + slide + "; " + press + "; 0\nend\nend\nend\n";
+                 "end\nsubsection Motion\nset Type = prescribed\nsubsection Prescribed\n"
+                 "set Translation = "
+                 + slide + "; " + press + "; 0\nend\nend\nend\nend\n";
       for (const unsigned int id : {4u, 5u})
         conditions += "subsection Condition " + std::to_string(id - 3)
                       + "\nset Boundary id = " + std::to_string(id)

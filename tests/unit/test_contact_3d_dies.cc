@@ -8,6 +8,7 @@
  * shape of the other dimension.
  */
 #include <ausroll/contact/contact_parameters.h>
+#include <ausroll/contact/motion/rolling.h>
 #include <ausroll/contact/rigid_die.h>
 #include <ausroll/core/exceptions.h>
 
@@ -36,8 +37,9 @@ namespace
 // directions in that plane), the gap is g, the closest point c + rho m and the normal m.
 TEST(Contact3dDies, TorusAndCylinderInAPose)
 {
-  const std::string motion = "subsection Motion\nset Type = prescribed\nset Translation = t; -2 * "
-                             "t; 3 * t\nset Rotation = 40 * t\nset Axis = 1, 1, 1\nend\n";
+  const std::string motion = "subsection Motion\nset Type = prescribed\nsubsection Prescribed\n"
+                             "set Translation = t; -2 * t; 3 * t\nset Rotation = 40 * t\n"
+                             "set Axis = 1, 1, 1\nend\nend\n";
   const contact::RigidDie<3> torus(
       parse_die("set Shape = torus\nsubsection Torus\nset Major radius = 10\nset Minor radius = "
                 "2\nend\n"
@@ -100,9 +102,10 @@ TEST(Contact3dDies, RollingMotionAboutATiltedAxis)
 {
   const contact::RigidDie<3> die(
       parse_die("set Shape = torus\nsubsection Torus\nset Major radius = 30\nset Minor radius = "
-                "3\nend\nsubsection Motion\nset Type = rolling\nset Workpiece center = 1, 2, 3\n"
-                "set Axis = 0, 1, 1\nset Workpiece rolling radius = 20\nset Die rolling radius = "
-                "30\nset Revolution angle = 30 * t\nend\n"),
+                "3\nend\nsubsection Motion\nset Type = rolling\nsubsection Rolling\n"
+                "set Workpiece center = 1, 2, 3\nset Axis = 0, 1, 1\n"
+                "set Workpiece rolling radius = 20\nset Die rolling radius = 30\n"
+                "set Revolution angle = 30 * t\nend\nend\n"),
       0);
   const contact::RollingMotion<3> *rolling = die.rolling_motion();
   ASSERT_NE(rolling, nullptr);
@@ -152,8 +155,10 @@ TEST(Contact3dDies, ShapeOfTheOtherDimensionIsAnInputError)
     EXPECT_NE(std::string(e.what()).find("2D run"), std::string::npos) << e.what();
   }
   // three translation components in 3D
-  EXPECT_THROW(contact::RigidDie<3>(parse_die("set Shape = plane\nsubsection Motion\nset Type = "
-                                              "prescribed\nset Translation = t; 0\nend\n"),
-                                    0),
-               InputError);
+  EXPECT_THROW(
+      contact::RigidDie<3>(parse_die("set Shape = plane\nsubsection Motion\nset Type = "
+                                     "prescribed\nsubsection Prescribed\nset Translation = t; 0\n"
+                                     "end\nend\n"),
+                           0),
+      InputError);
 }

@@ -6,11 +6,17 @@
  */
 #include <ausroll/contact/die_motion.h>
 #include <ausroll/contact/die_surface.h>
+#include <ausroll/contact/motion/fixed.h>
+#include <ausroll/contact/motion/prescribed.h>
+#include <ausroll/contact/motion/rolling.h>
 #include <ausroll/core/exceptions.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <string>
+#include <vector>
 
 using DieMotion = ausroll::contact::DieMotion<2>;
 using DiePose = ausroll::contact::DiePose<2>;
@@ -223,4 +229,42 @@ TEST(RollingMotion, InvalidDataThrows)
   d.beta = 1.0;
   d.direction = 0;
   EXPECT_THROW(RollingMotion{d}, ausroll::InputError);
+}
+
+// The motions come from the registry: `Motion/Type` lists the registered ones, and the entries of
+// `Motion/Prescribed` give the motion built directly from the same functions, to the last bit (the
+// same arithmetic); an entry of the flat `Motion` list of old files names its new subsection(s).
+TEST(MotionRegistry, RegisteredMotionsAndTheirSubsections)
+{
+  using ausroll::contact::MotionRegistry;
+  EXPECT_EQ(MotionRegistry::instance().names(),
+            (std::vector<std::string>{"fixed", "prescribed", "rolling"}));
+
+  dealii::ParameterHandler prm;
+  prm.enter_subsection("Motion");
+  prm.declare_entry("Type", "fixed", dealii::Patterns::Anything());
+  MotionRegistry::instance().declare_subsections(prm);
+  prm.leave_subsection();
+  prm.parse_input_from_string("subsection Motion\nset Type = prescribed\nsubsection Prescribed\n"
+                              "set Translation = 2 * t; -t\nset Rotation = 30 * t\n"
+                              "set Pivot = 1, 2\nend\nend\n");
+  prm.enter_subsection("Motion");
+  const auto parameters
+      = MotionRegistry::instance().parse("prescribed", prm, "Die/Motion/", "", "Type");
+  prm.leave_subsection();
+  const auto             motion = ausroll::contact::create_motion<2>(*parameters, "Die/Motion/");
+  const PrescribedMotion direct([](const double t) { return vec(2. * t, -t); },
+                                [](const double t) { return (M_PI / 180.) * (30. * t); },
+                                Point<2>(1.0, 2.0));
+  for (const double t : {0.0, 0.3, 1.7})
+  {
+    const Point<2> X(0.5, -1.5);
+    EXPECT_EQ(motion->pose(t).to_global(X), direct.pose(t).to_global(X)) << t;
+  }
+
+  std::map<std::string, std::string> moved;
+  ausroll::contact::add_moved_motion_entries("Contact/Die 0/Motion/", moved);
+  EXPECT_EQ(moved.at("Contact/Die 0/Motion/Feed"), "`Contact/Die 0/Motion/Rolling/Feed`");
+  EXPECT_EQ(moved.at("Contact/Die 0/Motion/Axis"),
+            "`Contact/Die 0/Motion/Prescribed/Axis` or `Contact/Die 0/Motion/Rolling/Axis`");
 }

@@ -5,6 +5,7 @@
  * entries); the printed file also parses into the SceneParameters struct with the same values.
  */
 #include <ausroll/contact/friction/coulomb.h>
+#include <ausroll/contact/motion/prescribed.h>
 #include <ausroll/io/parameter_documentation.h>
 #include <ausroll/scene/scene_parameters.h>
 
@@ -103,7 +104,14 @@ TEST(ParameterRoundTrip, ShippedScenesPrintParsePrintIdentical)
       ASSERT_EQ(coulomb_a == nullptr, coulomb_b == nullptr) << name;
       if (coulomb_a != nullptr)
         EXPECT_EQ(coulomb_a->mu, coulomb_b->mu) << name;
-      EXPECT_EQ(a.contact.dies[k].translation, b.contact.dies[k].translation);
+      EXPECT_EQ(a.contact.dies[k].motion_type, b.contact.dies[k].motion_type);
+      const auto *prescribed_a = dynamic_cast<const ausroll::contact::PrescribedMotionParameters *>(
+          a.contact.dies[k].motion.get());
+      const auto *prescribed_b = dynamic_cast<const ausroll::contact::PrescribedMotionParameters *>(
+          b.contact.dies[k].motion.get());
+      ASSERT_EQ(prescribed_a == nullptr, prescribed_b == nullptr) << name;
+      if (prescribed_a != nullptr)
+        EXPECT_EQ(prescribed_a->translation, prescribed_b->translation) << name;
     }
     EXPECT_EQ(a.boundary_conditions.conditions.size(), b.boundary_conditions.conditions.size());
   }

@@ -7,6 +7,7 @@
 #include <ausroll/io/postprocess/material_state.h>
 #include <ausroll/io/postprocess/monitor_points.h>
 #include <ausroll/io/postprocess/reaction_forces.h>
+#include <ausroll/io/postprocess/standard_set.h>
 #include <ausroll/io/postprocess/step_statistics.h>
 #include <ausroll/material/constitutive_model.h>
 #include <ausroll/mechanics/assembler.h>
@@ -201,4 +202,39 @@ TEST(PostprocessorSet, DuplicateColumnIsAnInternalError)
   twice.add(std::make_unique<io::postprocess::ReactionForces<2>>(std::vector<unsigned int>{0, 0}));
   twice.initialize(bar.input());
   EXPECT_THROW(twice.history_row(bar.input()), std::logic_error);
+}
+
+// The registered postprocessors in the order of the lines of make_standard_postprocessors() before
+// the registry (part of the output format: a change reorders every history.csv), the temperature
+// and phase postprocessors last and only in runs that have them; 2D and 3D alike.
+TEST(PostprocessorRegistry, StandardSetKeepsTheColumnOrder)
+{
+  const io::OutputParameters      output;
+  const io::PostprocessParameters postprocess;
+  for (const bool thermal : {false, true})
+  {
+    const io::PostprocessorContext context{output, postprocess, 1., 100., 2, thermal, thermal};
+    std::vector<std::string>       expected{"step statistics",
+                                      "applied pressures",
+                                      "monitor points",
+                                      "reaction forces",
+                                      "die forces",
+                                      "yield excess",
+                                      "line probes",
+                                      "boundary profile",
+                                      "contact nodes",
+                                      "cell averages",
+                                      "die geometry"};
+    if (thermal)
+      expected.insert(expected.end(), {"temperature", "phases"});
+    const auto               set_2d = io::make_standard_postprocessors<2>(context, MPI_COMM_SELF);
+    const auto               set_3d = io::make_standard_postprocessors<3>(context, MPI_COMM_SELF);
+    std::vector<std::string> names_2d, names_3d;
+    for (const auto &p : set_2d->postprocessors())
+      names_2d.push_back(p->name());
+    for (const auto &p : set_3d->postprocessors())
+      names_3d.push_back(p->name());
+    EXPECT_EQ(names_2d, expected);
+    EXPECT_EQ(names_3d, expected);
+  }
 }

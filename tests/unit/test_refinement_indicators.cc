@@ -83,7 +83,7 @@ namespace
   ausroll::adaptivity::AdaptivityParameters contact_parameters(const double fine_band)
   {
     ausroll::adaptivity::AdaptivityParameters p;
-    p.contact = true;
+    p.indicators = {"contact"};
     p.contact_band = 6.;
     p.fine_contact_band = fine_band;
     p.max_level = 4; // cells of 16, 8, 4, 2, 1 mm
@@ -178,7 +178,7 @@ namespace
   ausroll::adaptivity::AdaptivityParameters plastic_parameters(const int plastic_level)
   {
     ausroll::adaptivity::AdaptivityParameters p;
-    p.contact = true;
+    p.indicators = {"contact"};
     p.contact_band = 1.;
     p.max_level = 2;
     p.keep_plastic_strain = 0.05;
@@ -290,4 +290,20 @@ TEST(ContactIndicator, PlasticCoarseningLevelDoesNotCoarsenAtTheDie)
 TEST(ContactIndicator, PlasticCoarseningLevelDoesNotCoarsenAtTheDie3d)
 {
   check_no_plastic_coarsening_at_the_die<3>();
+}
+
+// `Adaptivity/Indicators` lists the registered indicators; a selection is read into the names in
+// the registry's order, each once, whatever order and repetitions the entry has.
+TEST(IndicatorRegistry, RegisteredIndicatorsAndSelection)
+{
+  using ausroll::adaptivity::AdaptivityParameters;
+  EXPECT_EQ(ausroll::adaptivity::IndicatorRegistry::instance().names(),
+            (std::vector<std::string>{"Kelly", "contact", "plastic strain"}));
+  dealii::ParameterHandler prm;
+  AdaptivityParameters::declare_parameters(prm);
+  prm.parse_input_from_string(
+      "subsection Adaptivity\nset Indicators = plastic strain, Kelly, plastic strain\nend\n");
+  AdaptivityParameters p;
+  p.parse_parameters(prm);
+  EXPECT_EQ(p.indicators, (std::vector<std::string>{"Kelly", "plastic strain"}));
 }

@@ -6,6 +6,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <string>
+#include <vector>
+
 namespace ausroll::adaptivity
 {
   /**
@@ -14,14 +17,14 @@ namespace ausroll::adaptivity
    */
   struct AdaptivityParameters
   {
-    unsigned int interval = 0;            ///< `Interval`: adapt every this many steps (0: never)
-    unsigned int initial_cycles = 0;      ///< `Initial refinement cycles` before the first step
-    bool         kelly = false;           ///< `Indicators` contains `Kelly`
-    bool         contact = false;         ///< `Indicators` contains `contact`
-    bool         plastic_strain = false;  ///< `Indicators` contains `plastic strain`
-    double       refine_fraction = 0.3;   ///< `Refine fraction` (Kelly, plastic strain)
-    double       coarsen_fraction = 0.05; ///< `Coarsen fraction` (Kelly, plastic strain)
-    double       contact_band = 1.;       ///< `Contact band` (mm)
+    unsigned int interval = 0;       ///< `Interval`: adapt every this many steps (0: never)
+    unsigned int initial_cycles = 0; ///< `Initial refinement cycles` before the first step
+    /** `Indicators`: the selected registered indicators (refinement_indicators.h), each once,
+        in the registry's order. */
+    std::vector<std::string> indicators;
+    double                   refine_fraction = 0.3; ///< `Refine fraction` (Kelly, plastic strain)
+    double coarsen_fraction = 0.05;                 ///< `Coarsen fraction` (Kelly, plastic strain)
+    double contact_band = 1.;                       ///< `Contact band` (mm)
     /** `Fine contact band` (mm; 0: off): with the contact indicator, only cells this close to a
         die reach `Maximum level`; the rest of the `Contact band` stops one level below. */
     double       fine_contact_band = 0.;
@@ -42,10 +45,7 @@ namespace ausroll::adaptivity
     bool   polynomial_transfer = true; ///< `State transfer` = polynomial (else nearest point)
 
     /** True if the mesh is adapted at all. */
-    bool active() const
-    {
-      return (interval > 0 || initial_cycles > 0) && (kelly || contact || plastic_strain);
-    }
+    bool active() const { return (interval > 0 || initial_cycles > 0) && !indicators.empty(); }
 
     /** Declare subsection `Adaptivity`. */
     static void declare_parameters(dealii::ParameterHandler &prm);

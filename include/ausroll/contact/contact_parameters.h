@@ -26,15 +26,8 @@ namespace ausroll::contact
                          ///< (NOFEAP)
   };
 
-  /** Motion of a die (`Motion/Type`). */
-  enum class MotionType
-  {
-    fixed,      ///< the die does not move
-    prescribed, ///< translation and rotation as functions of t
-    rolling     ///< planetary rolling about the workpiece centre (NOFEAP section 4.1)
-  };
-
   class FrictionParameters;
+  class MotionParameters;
 
   /** True if @p shape (a `Shape` value) names a 3D die shape. */
   bool is_3d_shape(const std::string &shape);
@@ -63,26 +56,13 @@ namespace ausroll::contact
     /** Full path of that subsection ("Contact/Die 0/Circle/") for error messages. */
     std::string surface_path;
 
-    // motion
-    MotionType  motion = MotionType::fixed; ///< `Motion/Type`
-    std::string translation = "0; 0";       ///< `Motion/Translation` u(t) (mm)
-    std::string rotation = "0";             ///< `Motion/Rotation` phi(t) (degrees)
-    /** `Motion/Pivot` (die-local rotation centre; dim coordinates, read by RigidDie<dim>). */
-    std::string pivot = "0, 0";
-    /** rolling: `Workpiece center` (dim coordinates, read by RigidDie<dim>). */
-    std::string workpiece_center = "0, 0";
-    /** 3D: `Motion/Axis`, the rotation axis of Rotation and the workpiece (and die) axis of
-        rolling. */
-    std::string axis = "0, 0, 1";
-    double      workpiece_radius = 1.; ///< rolling: `Workpiece rolling radius` R_G
-    double      die_radius = 1.;       ///< rolling: `Die rolling radius` R_D
-    double      center_distance = 0.;  ///< rolling: `Initial center distance` (0: R_G + R_D)
-    double      line_angle = 90.;      ///< rolling: `Initial line angle` (degrees)
-    int         direction = 1;         ///< rolling: `Direction` (+1 counter-clockwise, -1)
-    double      beta = 1.;             ///< rolling: `Rolling factor` beta (1 pure rolling)
-    std::string revolution = "0";      ///< rolling: `Revolution angle` theta_G(t) (degrees)
-    std::string slip = "0";            ///< rolling: `Slip angle` theta_s(t) (degrees)
-    std::string feed = "0";            ///< rolling: `Feed` f(t) (mm)
+    /** `Motion/Type`: the name of a registered die motion (contact/die_motion.h). */
+    std::string motion_type = "fixed";
+    /** The entries of the motion's own subsection `Contact/Die N/Motion/<Type>` (none for
+        `fixed`); set by parse_parameters(). */
+    std::shared_ptr<const MotionParameters> motion;
+    /** Full path of that subsection ("Contact/Die 0/Motion/Rolling/") for error messages. */
+    std::string motion_path;
   };
 
   /** Parameters of subsection `Contact`. */
@@ -106,7 +86,8 @@ namespace ausroll::contact
     /**
      * The entries an old `.prm` file may still set and where they are now: old full path ->
      * new full path(s) (the shape entries moved from `Contact/Die N` into one subsection per
-     * shape, the friction entries into one subsection per law). Reading the file turns such an
+     * shape, the friction entries into one subsection per law, the motion entries into one
+     * subsection of `Motion` per motion). Reading the file turns such an
      * unknown entry into this message.
      */
     static std::map<std::string, std::string> moved_entries();

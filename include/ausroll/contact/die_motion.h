@@ -16,15 +16,25 @@
  *   a = e_z acts on (x, y) as the 2D pose and leaves z unchanged.
  * Directions (normals, tangents) transform with R(theta) alone. The velocity of a die-fixed point
  * is dc/dt + dtheta/dt a x (x - c) (a = k in 2D).
+ *
+ * The kinds of motion (`Contact/Die N/Motion/Type`) are registered (core/registry.h): one file
+ * pair per kind in contact/motion/ (fixed.h, prescribed.h, rolling.h) with its DieMotion<dim>
+ * and its MotionParameters (own subsection of `Motion`), AUSROLL_REGISTER_DIE_MOTION at the end
+ * of its `.cc`.
  */
 #pragma once
 
+#include <ausroll/core/registry.h>
+
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
 #include <cmath>
 #include <functional>
-#include <optional>
+#include <map>
+#include <memory>
+#include <string>
 
 namespace ausroll::contact
 {
@@ -34,6 +44,12 @@ namespace ausroll::contact
   /** A vector-valued function of time (a displacement). */
   template <int dim>
   using VectorTimeFunction = std::function<dealii::Tensor<1, dim>(double)>;
+
+  /** Value of @p f at @p t, or 0 for an empty function. */
+  inline double value_or_zero(const TimeFunction &f, const double t)
+  {
+    return f ? f(t) : 0.0;
+  }
 
   template <int dim>
   class RollingMotion;
@@ -163,178 +179,68 @@ namespace ausroll::contact
     static double difference_step(double t);
   };
 
-  /** A die that does not move: the same pose at all times (identity by default). */
-  template <int dim>
-  class FixedPose : public DieMotion<dim>
+  /**
+   * The parameters of one kind of die motion: the entries of its own subsection
+   * `Contact/Die N/Motion/<Subsection>` (none for `fixed`), registered in MotionRegistry with
+   * AUSROLL_REGISTER_DIE_MOTION at the end of the motion's own `.cc` (contact/motion/). Entries
+   * whose reading depends on the dimension of the run (points, the Translation's components) are
+   * read by create().
+   */
+  class MotionParameters
   {
   public:
-    /** Die held at @p pose. */
-    explicit FixedPose(const DiePose<dim> &pose = DiePose<dim>());
+    virtual ~MotionParameters() = default;
 
-    /** The fixed pose. */
-    DiePose<dim> pose(double t) const override;
+    /** Read the motion's subsection (entered by the caller; @p path its full path with a
+        trailing slash, "Contact/Die 0/Motion/Rolling/"). */
+    virtual void parse(dealii::ParameterHandler &prm,
+                       const std::string        &path,
+                       const std::string        &input_directory)
+        = 0;
 
-    /** Zero. */
-    dealii::Tensor<1, dim> velocity(double t, const dealii::Point<dim> &X) const override;
+    /** The motion in a 2D run; InputError naming the entry under @p path. */
+    virtual std::unique_ptr<DieMotion<2>> create_2d(const std::string &path) const = 0;
 
-    /** Zero. */
-    double angular_velocity(double t) const override;
-
-  private:
-    /** The pose. */
-    DiePose<dim> fixed;
+    /** The motion in a 3D run; InputError naming the entry under @p path. */
+    virtual std::unique_ptr<DieMotion<3>> create_3d(const std::string &path) const = 0;
   };
+
+  /** The registry of the die motions (`Contact/Die N/Motion/Type`). */
+  using MotionRegistry = Registry<MotionParameters>;
+
+  /** The motion of @p parameters in a run of dimension @p dim (create_2d() or create_3d()). */
+  template <int dim>
+  std::unique_ptr<DieMotion<dim>> create_motion(const MotionParameters &parameters,
+                                                const std::string      &path)
+  {
+    if constexpr (dim == 2)
+      return parameters.create_2d(path);
+    else
+      return parameters.create_3d(path);
+  }
 
   /**
-   * Prescribed translation u(t) and rotation phi(t) about a pivot (3D: about an axis through the
-   * pivot):
-   *
-   *     x(t) = p0 + u(t) + R(phi(t)) (X - P),
-   *
-   * with P the pivot in local coordinates and p0 its global position when u = 0 (by default
-   * p0 = P: the local frame coincides with the global one at rest). Both functions are supplied
-   * by the caller (e.g. from a load curve); an empty function counts as zero.
+   * A scalar function of t parsed from @p expression (variable t, constant pi) and multiplied by
+   * @p scale; InputError naming @p entry if it cannot be parsed or (at t = 0 and whenever it is
+   * evaluated later) its value is not finite.
    */
+  TimeFunction
+  parse_time_function(const std::string &expression, const std::string &entry, double scale = 1.);
+
+  /** The point entry @p text of @p dim coordinates (3D also "x, y": z = 0, so that the 2D
+      defaults serve); InputError naming @p entry. */
   template <int dim>
-  class PrescribedMotion : public DieMotion<dim>
-  {
-  public:
-    /**
-     * Motion with @p translation u(t) and @p rotation phi(t) (rad, counter-clockwise) about the
-     * @p pivot P (local coordinates), whose rest position p0 equals P.
-     */
-    PrescribedMotion(VectorTimeFunction<dim>   translation,
-                     TimeFunction              rotation,
-                     const dealii::Point<dim> &pivot = dealii::Point<dim>());
-
-    /**
-     * As above, with the pivot at global position @p pivot_rest_position when u = 0, rotating
-     * about @p axis (3D; zero: e_z; ignored in 2D).
-     */
-    PrescribedMotion(VectorTimeFunction<dim>       translation,
-                     TimeFunction                  rotation,
-                     const dealii::Point<dim>     &pivot,
-                     const dealii::Point<dim>     &pivot_rest_position,
-                     const dealii::Tensor<1, dim> &axis = dealii::Tensor<1, dim>());
-
-    /** Translation with constant @p velocity from the rest position (u = v t), no rotation. */
-    static PrescribedMotion constant_velocity(const dealii::Tensor<1, dim> &velocity);
-
-    /** Pose: c = p0 + u(t), theta = phi(t) about the axis, X_ref = P. */
-    DiePose<dim> pose(double t) const override;
-
-  private:
-    /** u(t). */
-    VectorTimeFunction<dim> translation;
-    /** phi(t). */
-    TimeFunction rotation;
-    /** Pivot P in local coordinates. */
-    dealii::Point<dim> pivot;
-    /** Global position p0 of the pivot at rest. */
-    dealii::Point<dim> pivot_rest;
-    /** Rotation axis (3D). */
-    dealii::Tensor<1, dim> axis;
-  };
+  dealii::Point<dim> parse_die_point(const std::string &text, const std::string &entry);
 
   /**
-   * Planetary rolling (NOFEAP thesis, section 4.1): the workpiece (pitch radius R_G, centre O_G)
-   * does not rotate; the die (pitch radius R_D, local frame with the die centre at the origin)
-   * revolves about O_G and spins about its own centre. In 3D the workpiece axis is the line
-   * through O_G along the unit vector a (`axis`, e_z by default), the die axis is parallel to it
-   * through the die centre, and the motion below takes place in the plane orthogonal to a, with
-   * polar angles measured from e_1 (`reference`, its part orthogonal to a; by default
-   * Frame3D::perpendicular(a), e_x for a = e_z) towards e_2 = a x e_1. With a = e_z this is the 2D
-   * motion of the (x, y) plane, z unchanged.
-   *
-   * With sigma = +1 (direction = counter-clockwise revolution) or -1 (clockwise):
-   * - line of centres angle  psi(t) = psi_0 + sigma theta_G(t)   (polar angle of the die centre
-   *   seen from O_G),
-   * - centre distance        a(t)   = a_0 - f(t)                 (radial feed f towards O_G),
-   * - die centre             c(t)   = O_G + a(t) (cos psi, sin psi),
-   * - spin relative to the line of centres
-   *                          theta_D(t) = (R_G / R_D) theta_G(t) + (1 - beta) theta_s(t),
-   * - absolute die rotation  theta(t) = theta_0 + sigma (theta_G(t) + theta_D(t)).
-   *
-   * For beta = 1 (or theta_s = 0) this is rolling without slip of the die pitch circle on the
-   * workpiece pitch circle: the die point at the pitch point O_G + R_G (cos psi, sin psi) has zero
-   * velocity (the die's absolute rotation rate is (1 + R_G/R_D) times the revolution rate, as for
-   * a coin rolling around another coin). The slip angle theta_s(t) adds a die spin that is not
-   * matched by the revolution; the slip speed at the pitch point is then
-   * R_D (1 - beta) d theta_s/dt; beta = 0 means that the whole prescribed theta_s is slip.
-   * (A blended law theta_D = beta (R_G/R_D) theta_G + (1 - beta) theta_s' is obtained with
-   * theta_s = theta_s' - (R_G/R_D) theta_G.)
+   * The motion entries that moved into a motion subsection (before: one flat list in
+   * `Contact/Die N/Motion`): old full path -> new full path(s), added to @p moved, for the error
+   * message an old `.prm` file gets; @p motion_path is "Contact/Die N/Motion/".
    */
-  template <int dim>
-  class RollingMotion : public DieMotion<dim>
-  {
-  public:
-    /** Data of a rolling motion; lengths in mm, angles in rad. */
-    struct Data
-    {
-      /** Global centre O_G of the (non-rotating) workpiece (3D: a point of its axis). */
-      dealii::Point<dim> workpiece_center;
-      /** 3D: direction a of the workpiece axis (zero: e_z). Ignored in 2D. */
-      dealii::Tensor<1, dim> axis;
-      /** 3D: direction of polar angle 0 (zero: Frame3D::perpendicular(a)). Ignored in 2D. */
-      dealii::Tensor<1, dim> reference;
-      /** Workpiece pitch radius R_G (> 0). */
-      double workpiece_radius = 0.0;
-      /** Die pitch radius R_D (> 0). */
-      double die_radius = 0.0;
-      /** Centre distance a_0 at zero feed; default R_G + R_D (pitch circles touching). */
-      std::optional<double> initial_center_distance;
-      /** Polar angle psi_0 of the die centre seen from O_G at theta_G = 0 (default: above). */
-      double initial_line_angle = 0.5 * M_PI;
-      /** Die rotation theta_0 at t = 0 (orientation of the die's local frame). */
-      double initial_die_angle = 0.0;
-      /** +1: the die centre revolves counter-clockwise about O_G; -1: clockwise. */
-      int direction = 1;
-      /** Rolling ratio beta: 1 = pure rolling, 0 = the whole slip angle is slip. */
-      double beta = 1.0;
-      /** Revolution angle theta_G(t) >= 0 (rad); empty = 0. */
-      TimeFunction revolution_angle;
-      /** Slip angle theta_s(t) (rad); empty = 0. */
-      TimeFunction slip_angle;
-      /** Radial feed f(t) of the die centre towards O_G (mm); empty = 0. */
-      TimeFunction feed;
-    };
-
-    /** Rolling motion from @p data; throws ausroll::InputError for invalid data. */
-    explicit RollingMotion(const Data &data);
-
-    /** Pose: c = die_center(t), theta = theta_0 + sigma (theta_G + theta_D), X_ref = origin. */
-    DiePose<dim> pose(double t) const override;
-
-    /** This motion. */
-    const RollingMotion<dim> *as_rolling() const override { return this; }
-
-    /** Line of centres angle psi(t) = psi_0 + sigma theta_G(t). */
-    double line_angle(double t) const;
-
-    /** Centre distance a(t) = a_0 - f(t). */
-    double center_distance(double t) const;
-
-    /** Global die centre c(t). */
-    dealii::Point<dim> die_center(double t) const;
-
-    /** Die spin relative to the line of centres, theta_D(t) (see the class documentation). */
-    double spin_angle(double t) const;
-
-    /** Pitch point O_G + R_G (cos psi, sin psi) on the workpiece pitch circle. */
-    dealii::Point<dim> pitch_point(double t) const;
-
-    /** The data. */
-    const Data &data() const { return d; }
-
-  private:
-    /** The point O_G + r (cos psi e_1 + sin psi e_2) (2D: e_1 = x, e_2 = y). */
-    dealii::Point<dim> polar_point(double r, double psi) const;
-
-    /** The data (with defaults filled in). */
-    Data d;
-    /** a_0. */
-    double a0;
-    /** 3D: the in-plane basis e_1, e_2 (unused in 2D). */
-    dealii::Tensor<1, dim> e1, e2;
-  };
+  void add_moved_motion_entries(const std::string                  &motion_path,
+                                std::map<std::string, std::string> &moved);
 } // namespace ausroll::contact
+
+/** Register the die-motion parameters @p Class (see AUSROLL_REGISTER). */
+#define AUSROLL_REGISTER_DIE_MOTION(Class, name, subsection, description) \
+  AUSROLL_REGISTER(::ausroll::contact::MotionParameters, Class, name, subsection, description)

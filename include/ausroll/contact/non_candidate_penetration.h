@@ -13,6 +13,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <array>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -82,6 +83,27 @@ namespace ausroll::contact
                       const unsigned int                           step,
                       const double                                 tolerance,
                       const MPI_Comm                               comm);
+
+    /**
+     * `Contact/Penetrating boundaries = add`: the crossing found by find_crossing() if its
+     * boundary is to become a candidate of the die, found = false if there is none or if the
+     * boundary is among @p held (prescribed displacements, a symmetry axis or a clamp: as a
+     * contact candidate its constraints would conflict; check() warns about it). Collective.
+     */
+    Penetration boundary_to_add(const ContactOperator<dim>                  &contact,
+                                const dealii::TrilinosWrappers::MPI::Vector &u,
+                                const double                                 time,
+                                const dealii::TrilinosWrappers::MPI::Vector &u_start,
+                                const double                                 t_start,
+                                const double                                 tolerance,
+                                const std::set<unsigned int>                &held,
+                                const MPI_Comm                               comm) const;
+
+    /** The note of the run log when boundary_to_add() found @p p in step @p step at @p time. */
+    static std::string added_note(const Penetration &p,
+                                  const std::string &die_name,
+                                  const unsigned int step,
+                                  const double       time);
 
     /** The words naming @p p (boundary, die, depth, node, step, time) that begin both the
         warning of check() and the note of `Contact/Penetrating boundaries = add`. */

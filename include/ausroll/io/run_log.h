@@ -7,9 +7,11 @@
 
 #include <ausroll/io/history.h>
 #include <ausroll/io/output_parameters.h>
+#include <ausroll/solver/load_stepper.h>
 #include <ausroll/solver/newton_solver.h>
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/base/types.h>
 
 #include <mpi.h>
@@ -17,6 +19,12 @@
 #include <initializer_list>
 #include <string>
 #include <vector>
+
+namespace ausroll::contact
+{
+  template <int dim>
+  class ContactOperator;
+} // namespace ausroll::contact
 
 namespace ausroll::io
 {
@@ -115,6 +123,10 @@ namespace ausroll::io
                       const std::string &name,
                       const double       force,
                       const double       time);
+
+    /** record_force() of every die of @p contact at pseudo-time @p time (collective). */
+    template <int dim>
+    void record_die_forces(const contact::ContactOperator<dim> &contact, double time);
   };
 
   /** CPU seconds (user + system) used so far by this process (getrusage). */
@@ -135,6 +147,21 @@ namespace ausroll::io
                          const unsigned long long    discarded,
                          const double                wall_seconds,
                          const MPI_Comm              comm);
+
+  /**
+   * The end of a run of @p steps steps after @p wall_seconds: write_run_summary() and
+   * write_run_footer() (`Output/Verbosity` quiet, normal, verbose; rank @p rank), the timer
+   * table of @p timer (normal, verbose), "finished: N steps" on @p regression_log. Collective.
+   */
+  void write_run_end(const OutputParameters     &output,
+                     const unsigned int          rank,
+                     const RunTotals            &totals,
+                     const solver::SolveCount   &solve_count,
+                     const unsigned int          steps,
+                     const double                wall_seconds,
+                     dealii::TimerOutput        &timer,
+                     dealii::ConditionalOStream &regression_log,
+                     const MPI_Comm              comm);
 
   /** "step N name=value ..." with 5 digits (wall_seconds and step left out, |x| < 1e-12: 0). */
   void write_regression_line(dealii::ConditionalOStream &log,

@@ -13,6 +13,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,8 @@ namespace ausroll::mechanics
     static void declare_parameters(dealii::ParameterHandler &prm);
     /** Read subsection `Boundary conditions`. */
     void parse_parameters(dealii::ParameterHandler &prm);
+    /** The boundary ids with prescribed displacements (`fixed` or `displacement`). */
+    std::set<unsigned int> held_boundaries() const;
   };
 
   /**

@@ -10,6 +10,7 @@
 #include <ausroll/contact/contact_operator.h>
 #include <ausroll/contact/contact_strategy.h>
 #include <ausroll/contact/curved_die_tangent.h>
+#include <ausroll/contact/die_touch.h>
 #include <ausroll/contact/non_candidate_penetration.h>
 #include <ausroll/io/history.h>
 #include <ausroll/io/postprocess/interface.h>
@@ -213,9 +214,9 @@ namespace ausroll::scene
     bool   large_displacement_warned = false; ///< the small-strain warning was given
     /** Per die: a node was closed on it at the end of some step of this process (a run that
         ends with a die never touched stops with a message; not checked after --resume). */
-    std::vector<bool> die_touched;
-    io::RunTotals     run_totals; ///< cutbacks, peak die forces, CPU at the start (the summary)
-    io::EtaEstimator  eta;        ///< the ETA of the step lines
+    contact::DieTouchRecord die_touches;
+    io::RunTotals    run_totals; ///< cutbacks, peak die forces, CPU at the start (the summary)
+    io::EtaEstimator eta;        ///< the ETA of the step lines
 
     /** History columns, CSV files and VTU fields, in their fixed order (setup_postprocessing). */
     std::unique_ptr<io::PostprocessorSet<dim>> postprocessors;

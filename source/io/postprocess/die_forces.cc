@@ -1,4 +1,5 @@
 #include <ausroll/io/postprocess/die_forces.h>
+#include <ausroll/io/postprocess/standard_set.h>
 
 #include <cmath>
 
@@ -111,4 +112,18 @@ namespace ausroll::io::postprocess
 
   template class DieForces<2>;
   template class DieForces<3>;
+
+  namespace
+  {
+    template <int dim>
+    std::unique_ptr<Postprocessor<dim>> make_die_forces(const PostprocessorContext &)
+    {
+      return std::make_unique<DieForces<dim>>();
+    }
+  } // namespace
 } // namespace ausroll::io::postprocess
+
+AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_die_forces,
+                               "die forces",
+                               50,
+                               "force, torque and motion of each die")

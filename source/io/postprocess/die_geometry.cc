@@ -1,5 +1,6 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/io/postprocess/die_geometry.h>
+#include <ausroll/io/postprocess/standard_set.h>
 
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/data_out_base.h>
@@ -397,4 +398,17 @@ namespace ausroll::io::postprocess
                         const std::array<double, 2> &,
                         const double,
                         const unsigned int);
+  namespace
+  {
+    template <int dim>
+    std::unique_ptr<Postprocessor<dim>> make_die_geometry(const PostprocessorContext &c)
+    {
+      return std::make_unique<DieGeometry<dim>>(c.output.write_vtu);
+    }
+  } // namespace
 } // namespace ausroll::io::postprocess
+
+AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_die_geometry,
+                               "die geometry",
+                               110,
+                               "the dies as geometry for ParaView (dies.pvd)")

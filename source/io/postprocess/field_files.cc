@@ -1,4 +1,5 @@
 #include <ausroll/io/postprocess/field_files.h>
+#include <ausroll/io/postprocess/standard_set.h>
 
 #include <deal.II/dofs/dof_tools.h>
 
@@ -100,4 +101,40 @@ namespace ausroll::io::postprocess
   template class LineProbeFiles<3>;
   template class BoundaryProfileFiles<3>;
   template class ContactFiles<3>;
+
+  namespace
+  {
+    template <int dim>
+    std::unique_ptr<Postprocessor<dim>> make_line_probe_files(const PostprocessorContext &c)
+    {
+      return std::make_unique<LineProbeFiles<dim>>(c.postprocess.line_probes, c.quadrature_points);
+    }
+
+    template <int dim>
+    std::unique_ptr<Postprocessor<dim>> make_boundary_profile_files(const PostprocessorContext &c)
+    {
+      return std::make_unique<BoundaryProfileFiles<dim>>(c.postprocess.boundary_profile);
+    }
+
+    template <int dim>
+    std::unique_ptr<Postprocessor<dim>> make_contact_files(const PostprocessorContext &)
+    {
+      return std::make_unique<ContactFiles<dim>>();
+    }
+  } // namespace
 } // namespace ausroll::io::postprocess
+
+AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_line_probe_files,
+                               "line probes",
+                               70,
+                               "fields along the Line probes, one file per output")
+
+AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_boundary_profile_files,
+                               "boundary profile",
+                               80,
+                               "the deformed boundary profile, one file per output")
+
+AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_contact_files,
+                               "contact nodes",
+                               90,
+                               "the contact nodes and their statuses, one file per output")

@@ -1,4 +1,5 @@
 #include <ausroll/io/postprocess/material_state.h>
+#include <ausroll/io/postprocess/standard_set.h>
 #include <ausroll/material/tensor_functions.h>
 
 #include <deal.II/base/mpi.h>
@@ -137,4 +138,29 @@ namespace ausroll::io::postprocess
   template class CellAverages<2>;
   template class YieldExcess<3>;
   template class CellAverages<3>;
+
+  namespace
+  {
+    template <int dim>
+    std::unique_ptr<Postprocessor<dim>> make_yield_excess(const PostprocessorContext &c)
+    {
+      return std::make_unique<YieldExcess<dim>>(c.yield_stress);
+    }
+
+    template <int dim>
+    std::unique_ptr<Postprocessor<dim>> make_cell_averages(const PostprocessorContext &)
+    {
+      return std::make_unique<CellAverages<dim>>();
+    }
+  } // namespace
 } // namespace ausroll::io::postprocess
+
+AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_yield_excess,
+                               "yield excess",
+                               60,
+                               "how far the stress lies outside the yield surface")
+
+AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_cell_averages,
+                               "cell averages",
+                               100,
+                               "cell averages of stress and strain as VTU fields")

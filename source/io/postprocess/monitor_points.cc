@@ -2,6 +2,7 @@
 #include <ausroll/core/parse_utilities.h>
 #include <ausroll/io/owned_cell_around_point.h>
 #include <ausroll/io/postprocess/monitor_points.h>
+#include <ausroll/io/postprocess/standard_set.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
@@ -74,4 +75,18 @@ namespace ausroll::io::postprocess
 
   template class MonitorPoints<2>;
   template class MonitorPoints<3>;
+
+  namespace
+  {
+    template <int dim>
+    std::unique_ptr<Postprocessor<dim>> make_monitor_points(const PostprocessorContext &c)
+    {
+      return std::make_unique<MonitorPoints<dim>>(c.postprocess.monitor_points);
+    }
+  } // namespace
 } // namespace ausroll::io::postprocess
+
+AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_monitor_points,
+                               "monitor points",
+                               30,
+                               "displacements at the Monitor points")

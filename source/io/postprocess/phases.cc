@@ -1,4 +1,5 @@
 #include <ausroll/io/postprocess/phases.h>
+#include <ausroll/io/postprocess/standard_set.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -90,4 +91,20 @@ namespace ausroll::io::postprocess
 
   template class PhaseFractions<2>;
   template class PhaseFractions<3>;
+
+  namespace
+  {
+    template <int dim>
+    std::unique_ptr<Postprocessor<dim>> make_phase_fractions(const PostprocessorContext &c)
+    {
+      if (!c.phases)
+        return nullptr;
+      return std::make_unique<PhaseFractions<dim>>(c.bainite);
+    }
+  } // namespace
 } // namespace ausroll::io::postprocess
+
+AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_phase_fractions,
+                               "phases",
+                               130,
+                               "martensite fraction and carbon content when Phases are enabled")

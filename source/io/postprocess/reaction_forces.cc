@@ -1,4 +1,6 @@
+#include <ausroll/core/parse_utilities.h>
 #include <ausroll/io/postprocess/reaction_forces.h>
+#include <ausroll/io/postprocess/standard_set.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -51,4 +53,19 @@ namespace ausroll::io::postprocess
 
   template class ReactionForces<2>;
   template class ReactionForces<3>;
+
+  namespace
+  {
+    template <int dim>
+    std::unique_ptr<Postprocessor<dim>> make_reaction_forces(const PostprocessorContext &c)
+    {
+      return std::make_unique<ReactionForces<dim>>(parse_unsigned_list(
+          c.postprocess.reaction_boundaries, "Postprocess/Reaction boundaries"));
+    }
+  } // namespace
 } // namespace ausroll::io::postprocess
+
+AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_reaction_forces,
+                               "reaction forces",
+                               40,
+                               "reaction forces of the Reaction boundaries")

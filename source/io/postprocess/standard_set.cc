@@ -1,57 +1,47 @@
-#include <ausroll/core/parse_utilities.h>
-#include <ausroll/io/postprocess/die_forces.h>
-#include <ausroll/io/postprocess/die_geometry.h>
-#include <ausroll/io/postprocess/field_files.h>
-#include <ausroll/io/postprocess/material_state.h>
-#include <ausroll/io/postprocess/monitor_points.h>
-#include <ausroll/io/postprocess/reaction_forces.h>
 #include <ausroll/io/postprocess/standard_set.h>
-#include <ausroll/io/postprocess/step_statistics.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace ausroll::io
 {
   template <int dim>
   std::unique_ptr<PostprocessorSet<dim>>
-  make_standard_postprocessors(const OutputParameters      &output,
-                               const PostprocessParameters &p,
-                               const double                 end_time,
-                               const double                 yield_stress,
-                               const unsigned int           quadrature_points,
-                               const MPI_Comm               comm,
-                               const bool                   time_in_seconds)
+  make_standard_postprocessors(const PostprocessorContext &context, const MPI_Comm comm)
   {
-    // The order of these lines is the order of the history columns and output files.
-    namespace pp = postprocess;
-    auto set = std::make_unique<PostprocessorSet<dim>>(output, comm);
-    set->add(std::make_unique<pp::StepStatistics<dim>>(end_time, time_in_seconds));
-    set->add(std::make_unique<pp::AppliedPressures<dim>>());
-    set->add(std::make_unique<pp::MonitorPoints<dim>>(p.monitor_points));
-    set->add(std::make_unique<pp::ReactionForces<dim>>(
-        parse_unsigned_list(p.reaction_boundaries, "Postprocess/Reaction boundaries")));
-    set->add(std::make_unique<pp::DieForces<dim>>());
-    set->add(std::make_unique<pp::YieldExcess<dim>>(yield_stress));
-    set->add(std::make_unique<pp::LineProbeFiles<dim>>(p.line_probes, quadrature_points));
-    set->add(std::make_unique<pp::BoundaryProfileFiles<dim>>(p.boundary_profile));
-    set->add(std::make_unique<pp::ContactFiles<dim>>());
-    set->add(std::make_unique<pp::CellAverages<dim>>());
-    set->add(std::make_unique<pp::DieGeometry<dim>>(output.write_vtu));
+    // The registered postprocessors in the order of their positions (the history columns).
+    const auto &registry = PostprocessorRegistry::instance();
+    std::vector<std::pair<unsigned int, std::unique_ptr<PostprocessorFactory>>> factories;
+    for (const std::string &name : registry.names())
+    {
+      std::unique_ptr<PostprocessorFactory> factory = registry.get(name, "postprocessor").make();
+      const unsigned int                    position = factory->position();
+      factories.emplace_back(position, std::move(factory));
+    }
+    std::sort(factories.begin(),
+              factories.end(),
+              [](const auto &a, const auto &b) { return a.first < b.first; });
+    auto set = std::make_unique<PostprocessorSet<dim>>(context.output, comm);
+    for (unsigned int i = 0; i < factories.size(); ++i)
+    {
+      if (i > 0 && factories[i].first == factories[i - 1].first)
+        throw std::logic_error("two postprocessors are registered at position "
+                               + std::to_string(factories[i].first));
+      std::unique_ptr<Postprocessor<dim>> postprocessor;
+      if constexpr (dim == 2)
+        postprocessor = factories[i].second->create_2d(context);
+      else
+        postprocessor = factories[i].second->create_3d(context);
+      if (postprocessor)
+        set->add(std::move(postprocessor));
+    }
     return set;
   }
 
   template std::unique_ptr<PostprocessorSet<2>>
-  make_standard_postprocessors(const OutputParameters &,
-                               const PostprocessParameters &,
-                               const double,
-                               const double,
-                               const unsigned int,
-                               const MPI_Comm,
-                               const bool);
+  make_standard_postprocessors(const PostprocessorContext &, const MPI_Comm);
   template std::unique_ptr<PostprocessorSet<3>>
-  make_standard_postprocessors(const OutputParameters &,
-                               const PostprocessParameters &,
-                               const double,
-                               const double,
-                               const unsigned int,
-                               const MPI_Comm,
-                               const bool);
+  make_standard_postprocessors(const PostprocessorContext &, const MPI_Comm);
 } // namespace ausroll::io

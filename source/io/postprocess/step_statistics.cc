@@ -1,3 +1,4 @@
+#include <ausroll/io/postprocess/standard_set.h>
 #include <ausroll/io/postprocess/step_statistics.h>
 
 namespace ausroll::io::postprocess
@@ -45,4 +46,29 @@ namespace ausroll::io::postprocess
   template class AppliedPressures<2>;
   template class StepStatistics<3>;
   template class AppliedPressures<3>;
+
+  namespace
+  {
+    template <int dim>
+    std::unique_ptr<Postprocessor<dim>> make_step_statistics(const PostprocessorContext &c)
+    {
+      return std::make_unique<StepStatistics<dim>>(c.end_time, c.thermal);
+    }
+
+    template <int dim>
+    std::unique_ptr<Postprocessor<dim>> make_applied_pressures(const PostprocessorContext &)
+    {
+      return std::make_unique<AppliedPressures<dim>>();
+    }
+  } // namespace
 } // namespace ausroll::io::postprocess
+
+AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_step_statistics,
+                               "step statistics",
+                               10,
+                               "step, time, load factor, iterations and cutbacks of each step")
+
+AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_applied_pressures,
+                               "applied pressures",
+                               20,
+                               "the pressure of every pressure boundary condition")

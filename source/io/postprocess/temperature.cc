@@ -1,3 +1,4 @@
+#include <ausroll/io/postprocess/standard_set.h>
 #include <ausroll/io/postprocess/temperature.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -95,4 +96,20 @@ namespace ausroll::io::postprocess
 
   template class TemperatureField<2>;
   template class TemperatureField<3>;
+
+  namespace
+  {
+    template <int dim>
+    std::unique_ptr<Postprocessor<dim>> make_temperature_field(const PostprocessorContext &c)
+    {
+      if (!c.thermal)
+        return nullptr;
+      return std::make_unique<TemperatureField<dim>>();
+    }
+  } // namespace
 } // namespace ausroll::io::postprocess
+
+AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_temperature_field,
+                               "temperature",
+                               120,
+                               "temperature columns and fields of a thermal run")

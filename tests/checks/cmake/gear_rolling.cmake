@@ -119,7 +119,7 @@ ausroll_add_check(NAME gear_hertz_pitch
 set(_gear_adaptive ${CMAKE_CURRENT_BINARY_DIR}/gear_rolling_adaptive_short.prm)
 execute_process(COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/scripts/prm_variant.py
     ${CMAKE_SOURCE_DIR}/prm/gear_rolling.prm ${_gear_adaptive}
-    "Contact/Die 0/Motion/Revolution angle = -4 + 14 * min(max(t - 0.1, 0), 1)"
+    "Contact/Die 0/Motion/Rolling/Revolution angle = -4 + 14 * min(max(t - 0.1, 0), 1)"
     "Loading/End time = 0.22" "Loading/Number of steps = 11" "Adaptivity/Interval = 2"
     "Output/Directory = out" "Output/Interval = 100" "Output/Write VTU = false"
     "Output/Verbosity = quiet"
@@ -160,7 +160,7 @@ set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
 # The 3D gear set-up against the 2D scene: prm/gear_rolling_uniform.prm on the once refined tooth
 # (Coulomb, feed and 5 rolling increments, no F-bar) and the same tooth extruded over a 1 mm slice
 # with u_z = 0 on both z faces, rolled by the 3D spur die (extruded involute profile, rolling
-# about Motion/Axis = z). The 3D discrete problem is the 2D one repeated along z: histories within
+# about Motion/Rolling/Axis = z). The 3D discrete problem is the 2D one repeated along z: histories within
 # 1e-8 (measured: equal; reasons in check_gear_rolling_3d.py). About 3 s CPU.
 _gear_3d_check(gear_rolling_3d_slice slice ${CMAKE_CURRENT_BINARY_DIR}/gear_rolling_3d_slice_2d.prm
   ${CMAKE_CURRENT_BINARY_DIR}/gear_rolling_3d_slice_3d.prm)

@@ -5,7 +5,7 @@
  */
 #pragma once
 
-#include <ausroll/contact/die_motion.h>
+#include <ausroll/contact/motion/rolling.h>
 #include <ausroll/io/postprocess/interface.h>
 
 #include <deal.II/base/tensor.h>
@@ -47,7 +47,7 @@ namespace ausroll::io::postprocess
                        HistoryRow                      &row);
 
   /**
-   * 3D columns of a die with `Motion/Type = rolling` (workpiece axis a = `Motion/Axis`):
+   * 3D columns of a die with `Motion/Type = rolling` (workpiece axis a = `Motion/Rolling/Axis`):
    * `revolution`, `feed` as in 2D; the force @p force of the die on the workpiece (N) along
    * `force_radial` (e_r: from the workpiece axis to the die centre, orthogonal to a),
    * `force_tangential` (e_t = a x e_r), `force_axial` (a), `force_magnitude` |F|; and `torque`

@@ -1,0 +1,107 @@
+/**
+ * @file mesh_adaptation.cc
+ * The members of Scene that follow a change of the mesh or of the DoFs (as ASPECT keeps
+ * Simulator's mesh refinement apart from its core): the parts set up on the DoFs, and the
+ * adaptation of the mesh (marking by the registered refinement indicators, the transfer of
+ * displacement, material points, temperature and contact statuses, the re-equilibration).
+ */
+#include <ausroll/adaptivity/refinement_indicators.h>
+#include <ausroll/core/exceptions.h>
+#include <ausroll/scene/scene.h>
+
+#include <algorithm>
+#include <tuple>
+
+namespace ausroll::scene
+{
+  using namespace dealii;
+
+  template <int dim>
+  void Scene<dim>::setup_dof_dependents()
+  {
+    linear_solver.set_rigid_body_modes(system.dof_handler, system.mapping);
+    contact.setup(
+        system.dof_handler,
+        system.mapping,
+        [this](const Point<dim> &x) { return kinematics.volume_factor(x); },
+        system.min_cell_diameter);
+    if (contact.active())
+    {
+      // The curvature tangent is planar (2D only).
+      if constexpr (dim == 2)
+        curved_die_tangent.setup(system.mapping, system.dof_handler);
+      non_candidate_penetration.setup(system.mapping, system.dof_handler);
+    }
+  }
+
+  template <int dim>
+  bool Scene<dim>::adapt_mesh(const double next_time)
+  {
+    const adaptivity::AdaptivityParameters &p = parameters.adaptivity;
+    unsigned int                            n_refined = 0, n_coarsened = 0;
+    {
+      TimerOutput::Scope                 scope(*timer, "adaptivity");
+      const adaptivity::DieDistance<dim> die_distance
+          = contact.active() ? adaptivity::DieDistance<dim>(
+                [this, next_time](const Point<dim> &x) {
+                  return std::min(contact.distance_to_dies(x, time),
+                                  contact.distance_to_dies(x, next_time));
+                })
+                             : adaptivity::DieDistance<dim>();
+      if (!adaptivity::mark_cells(p,
+                                  system.triangulation,
+                                  system.mapping,
+                                  system.dof_handler,
+                                  system.solution_ghosted,
+                                  system.material_points,
+                                  die_distance))
+        return false;
+
+      // Carry displacement, material points and contact statuses to the new mesh.
+      const std::vector<double> contact_state = contact.pack_state();
+      linear_solver.matrix_pattern_changed();
+      // (the counts for the log: cells split and cells merged into their parents)
+      std::tie(n_refined, n_coarsened) = system.execute_refinement(
+          [this]()
+          {
+            point_transfer->prepare();
+            if (thermal)
+              thermal->prepare_refinement();
+          },
+          [this]()
+          {
+            setup_dof_dependents();
+            point_transfer->unpack();
+            if (thermal)
+            {
+              thermal->setup();
+              thermal->finish_refinement();
+            }
+          });
+      system.rebase_material_points(*assembler, *model);
+      contact.unpack_state(contact_state);
+      setup_postprocessing();
+    }
+    log << "  mesh adapted: " << system.triangulation.n_global_active_cells() << " cells, "
+        << system.dof_handler.n_dofs() << " DoFs (" << n_refined << " cells refined, "
+        << n_coarsened << " coarsened)" << std::endl;
+
+    // Before the first step (initial refinement cycles, t = 0) nothing has been solved yet: the
+    // interpolated state is the undeformed one and Newton would only chase round-off.
+    if (p.reequilibrate && time > 0.)
+    {
+      // Equilibrium on the new mesh at the same time (no load change).
+      const solver::NewtonResult result = newton.solve(*equilibrium, newton_log);
+      if (!result.converged)
+        throw RunFailure("re-equilibration after mesh adaptation at t = " + std::to_string(time)
+                         + " failed: " + result.reason);
+      commit_step(false); // the predictor's u_n-1 stays the last step's converged state
+    }
+    return true;
+  }
+
+  template void Scene<2>::setup_dof_dependents();
+  template bool Scene<2>::adapt_mesh(const double);
+  template void Scene<3>::setup_dof_dependents();
+  template bool Scene<3>::adapt_mesh(const double);
+} // namespace ausroll::scene
