@@ -5,7 +5,7 @@
  * every quadrature point in every Newton iteration. A second table gives the cost of the tensor
  * functions of the finite-strain model (tensor_functions.h: spectral decomposition, logarithm,
  * exponential, with and without derivative, polar decomposition) on 64 symmetric positive definite
- * tensors (a third of them with two equal eigenvalues).
+ * tensors (a third of them with two equal eigenvalues), general and with x_3 principal (plane).
  *
  * Usage: material_point_cost [n_evaluations = 100000]
  *
@@ -110,10 +110,10 @@ namespace
   /**
    * 64 symmetric positive definite tensors: elastic left Cauchy-Green tensors I + 2 eps (|eps|
    * about 1e-3, as b_e in a forming run), total ones F F^T (stretches up to about 1.5), and in
-   * every third one two equal eigenvalues (a plane-strain b_e: the out-of-plane direction equals an
-   * in-plane one only by chance, uniaxial states by symmetry).
+   * every third one two equal eigenvalues (uniaxial states). With @p plane, x_3 is a principal
+   * direction (the tensors of a plane-strain or axisymmetric model).
    */
-  std::vector<dealii::SymmetricTensor<2, 3>> tensor_samples()
+  std::vector<dealii::SymmetricTensor<2, 3>> tensor_samples(const bool plane)
   {
     std::mt19937                               rng(3);
     std::uniform_real_distribution<double>     u(-1., 1.);
@@ -124,12 +124,13 @@ namespace
       Tensor<2, 3> G;
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
-          G[i][j] = (i == j ? 1. : 0.) + scale * u(rng);
+          G[i][j]
+              = (i == j ? 1. : 0.) + (plane && i != j && (i == 2 || j == 2) ? 0. : scale * u(rng));
       if (s % 3 == 0)
       {
         // uniaxial stretch along a random unit axis a: G = I + c a (x) a (two equal eigenvalues)
         Tensor<1, 3> a;
-        for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int i = 0; i < (plane ? 2u : 3u); ++i)
           a[i] = u(rng);
         a /= a.norm();
         G = Tensor<2, 3>(dealii::unit_symmetric_tensor<3>()) + scale * dealii::outer_product(a, a);
@@ -161,12 +162,19 @@ namespace
   void time_tensor_functions(const int n)
   {
     using dealii::SymmetricTensor;
-    const auto samples = tensor_samples();
-    std::printf("\nCPU ns per call of the tensor functions (best of 3 x %d calls, 64 tensors)\n",
-                n);
-    std::printf("%-32s %10s\n", "function", "ns");
+    const auto samples_3d = tensor_samples(false), samples_plane = tensor_samples(true);
+    std::printf(
+        "\nCPU ns per call of the tensor functions (best of 3 x %d calls, 64 tensors; plane: "
+        "x_3 principal)\n",
+        n);
+    std::printf("%-32s %10s %10s\n", "function", "3D", "plane");
     const auto row = [&](const char *name, const auto &f)
-    { std::printf("%-32s %10.0f\n", name, time_tensor_function(samples, n, f)); };
+    {
+      std::printf("%-32s %10.0f %10.0f\n",
+                  name,
+                  time_tensor_function(samples_3d, n, f),
+                  time_tensor_function(samples_plane, n, f));
+    };
     row("spectral_decomposition",
         [](const SymmetricTensor<2, 3> &X) { return spectral_decomposition(X).vectors[0][0]; });
     row("logarithm", [](const SymmetricTensor<2, 3> &X) { return logarithm(X)[0][1]; });
