@@ -106,8 +106,18 @@ namespace ausroll::material
     // d tau / d b^trial = D : (d ln b / d b) / 2 =: K / 2; with d b^trial = 2 sym(dF C_p,n^-1 F^T)
     // the direction dF = e_k (x) e_L gives d tau_ij = sum_n K_ijkn (F C_p,n^-1)_nL (minor
     // symmetry of K), evaluated on the raw 6 x 6 storage of K.
-    const SymmetricTensor<4, 3> K = r.tangent * dlog_db;
-    const Tensor<2, 3>          FG = F * Tensor<2, 3>(Cp_inv);
+    double K[6][6]; // r.tangent : dlog_db on the raw entries (off-diagonal pairs count twice)
+    for (unsigned int p = 0; p < 6; ++p)
+      for (unsigned int q = 0; q < 6; ++q)
+      {
+        double off = 0., diagonal = 0.;
+        for (unsigned int m = 0; m < 3; ++m)
+          diagonal += r.tangent.access_raw_entry(6 * p + m) * dlog_db.access_raw_entry(6 * m + q);
+        for (unsigned int m = 3; m < 6; ++m)
+          off += r.tangent.access_raw_entry(6 * p + m) * dlog_db.access_raw_entry(6 * m + q);
+        K[p][q] = 2. * off + diagonal;
+      }
+    const Tensor<2, 3> FG = F * Tensor<2, 3>(Cp_inv);
 
     // Back-stress rotation: d(dR) = dR Omega with (tr dU I - dU) omega = axial(dR^T df - df^T dR)
     // (polar decomposition f = dR dU). With df = e_k (x) g_L (g_L = row L of F_n^-1) the right side
@@ -131,7 +141,7 @@ namespace ausroll::material
       double K_k[6][3]; // K_(p)(kn)
       for (unsigned int p = 0; p < 6; ++p)
         for (unsigned int n = 0; n < 3; ++n)
-          K_k[p][n] = K.access_raw_entry(6 * p + raw_index[k][n]);
+          K_k[p][n] = K[p][raw_index[k][n]];
       for (unsigned int L = 0; L < 3; ++L)
       {
         SymmetricTensor<2, 3> d_tau;

@@ -237,10 +237,12 @@ namespace ausroll::material
      * The derivative of the isotropic function Y = sum_a f(x_a) n_a (x) n_a:
      * dY/dX = sum_{a,b} theta_ab N_ab (x) N_ab with N_ab = sym(n_a (x) n_b), theta_aa = f'(x_a)
      * and theta_ab = (f(x_a) - f(x_b)) / (x_a - x_b) (symmetric in a, b). Assembled on the 21
-     * independent entries of the 6 x 6 raw storage (the result is major symmetric).
+     * independent entries of the 6 x 6 raw storage of @p D (every entry is written; the result is
+     * major symmetric).
      */
-    SymmetricTensor<4, 3> spectral_derivative(const SpectralDecomposition &s,
-                                              const double (&theta)[3][3])
+    void spectral_derivative(const SpectralDecomposition &s,
+                             const double (&theta)[3][3],
+                             SymmetricTensor<4, 3> &D)
     {
       // the raw index p of SymmetricTensor<2, 3> and its (i, j)
       static constexpr unsigned int first[6] = {0, 1, 2, 0, 0, 1};
@@ -259,7 +261,6 @@ namespace ausroll::material
           }
           w[pair] = (a == b ? 1. : 2.) * theta[a][b];
         }
-      SymmetricTensor<4, 3> D;
       for (unsigned int p = 0; p < 6; ++p)
         for (unsigned int q = p; q < 6; ++q)
         {
@@ -269,7 +270,6 @@ namespace ausroll::material
           D.access_raw_entry(6 * p + q) = d;
           D.access_raw_entry(6 * q + p) = d;
         }
-      return D;
     }
 
     /** log1p(d) / d, accurate for all d > -1 including d -> 0. */
@@ -319,7 +319,7 @@ namespace ausroll::material
           const double d = (s.shifted_values[a] - s.shifted_values[b]) / s.values[b];
           theta[a][b] = theta[b][a] = log1p_over(d) / s.values[b];
         }
-      *derivative = spectral_derivative(s, theta);
+      spectral_derivative(s, theta, *derivative);
     }
     return spectral_sum(s, f);
   }
@@ -343,7 +343,7 @@ namespace ausroll::material
       for (unsigned int a = 0; a < 3; ++a)
         for (unsigned int b = a; b < 3; ++b)
           theta[a][b] = theta[b][a] = f[b] * expm1_over(s.shifted_values[a] - s.shifted_values[b]);
-      *derivative = spectral_derivative(s, theta);
+      spectral_derivative(s, theta, *derivative);
     }
     return spectral_sum(s, f);
   }
