@@ -2,23 +2,32 @@
  * @file material_point_cost.cc
  * Cost of one material-point evaluation (stress + consistent tangent, and stress only) of every
  * `Model/Kinematics`, in an elastic and in a plastic step after a plastic history. These run at
- * every quadrature point in every Newton iteration.
+ * every quadrature point in every Newton iteration. A second table gives the cost of the tensor
+ * functions of the finite-strain model (tensor_functions.h: spectral decomposition, logarithm,
+ * exponential, with and without derivative, polar decomposition) on 64 symmetric positive definite
+ * tensors (a third of them with two equal eigenvalues), general and with x_3 principal (plane).
  *
  * Usage: material_point_cost [n_evaluations = 100000]
+ *
+ * Times are CPU times of the process (clock_gettime(CLOCK_PROCESS_CPUTIME_ID)), not wall times,
+ * so that other work on a shared machine inflates them less.
  *
  * The program also counts the calls of the global operator new during the timed loops (the
  * evaluation must not allocate; the count is printed and should be 0).
  */
 #include <ausroll/material/constitutive_model.h>
 #include <ausroll/material/material_point.h>
+#include <ausroll/material/tensor_functions.h>
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <new>
+#include <random>
+#include <vector>
 
 namespace
 {
@@ -62,6 +71,14 @@ namespace
     return R * U;
   }
 
+  /** CPU time of the process in nanoseconds. */
+  double cpu_nanoseconds()
+  {
+    timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return 1e9 * t.tv_sec + t.tv_nsec;
+  }
+
   /** Nanoseconds per evaluation (the best of 3 repetitions: the machine may be shared). */
   double time_evaluations(const ConstitutiveModel &model,
                           const MaterialState     &old,
@@ -75,7 +92,7 @@ namespace
     double        sink = 0., best = 1e300;
     for (int repetition = 0; repetition < 3; ++repetition)
     {
-      const auto start = std::chrono::steady_clock::now();
+      const double start = cpu_nanoseconds();
       for (int i = 0; i < n; ++i)
       {
         Tensor<2, 3> Fi = F;
@@ -83,12 +100,107 @@ namespace
         model.evaluate(Fi, old, trial, P, with_tangent ? &A : nullptr);
         sink += P[0][0] + (with_tangent ? A[0][1][1][0] : 0.);
       }
-      const auto stop = std::chrono::steady_clock::now();
-      best = std::min(best, std::chrono::duration<double, std::nano>(stop - start).count() / n);
+      best = std::min(best, (cpu_nanoseconds() - start) / n);
     }
     if (sink == 0.12345)
       std::printf(" ");
     return best;
+  }
+
+  /**
+   * 64 symmetric positive definite tensors: elastic left Cauchy-Green tensors I + 2 eps (|eps|
+   * about 1e-3, as b_e in a forming run), total ones F F^T (stretches up to about 1.5), and in
+   * every third one two equal eigenvalues (uniaxial states). With @p plane, x_3 is a principal
+   * direction (the tensors of a plane-strain or axisymmetric model).
+   */
+  std::vector<dealii::SymmetricTensor<2, 3>> tensor_samples(const bool plane)
+  {
+    std::mt19937                               rng(3);
+    std::uniform_real_distribution<double>     u(-1., 1.);
+    std::vector<dealii::SymmetricTensor<2, 3>> samples;
+    for (int s = 0; s < 64; ++s)
+    {
+      const double scale = s % 2 == 0 ? 1e-3 : 0.3;
+      Tensor<2, 3> G;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          G[i][j]
+              = (i == j ? 1. : 0.) + (plane && i != j && (i == 2 || j == 2) ? 0. : scale * u(rng));
+      if (s % 3 == 0)
+      {
+        // uniaxial stretch along a random unit axis a: G = I + c a (x) a (two equal eigenvalues)
+        Tensor<1, 3> a;
+        for (unsigned int i = 0; i < (plane ? 2u : 3u); ++i)
+          a[i] = u(rng);
+        a /= a.norm();
+        G = Tensor<2, 3>(dealii::unit_symmetric_tensor<3>()) + scale * dealii::outer_product(a, a);
+      }
+      samples.push_back(dealii::symmetrize(G * dealii::transpose(G)));
+    }
+    return samples;
+  }
+
+  /** Nanoseconds per call of @p f on the samples (the best of 3 repetitions). */
+  template <typename Function>
+  double time_tensor_function(const std::vector<dealii::SymmetricTensor<2, 3>> &samples,
+                              const int                                         n,
+                              const Function                                   &f)
+  {
+    double sink = 0., best = 1e300;
+    for (int repetition = 0; repetition < 3; ++repetition)
+    {
+      const double start = cpu_nanoseconds();
+      for (int i = 0; i < n; ++i)
+        sink += f(samples[i % samples.size()]);
+      best = std::min(best, (cpu_nanoseconds() - start) / n);
+    }
+    if (sink == 0.12345)
+      std::printf(" ");
+    return best;
+  }
+
+  void time_tensor_functions(const int n)
+  {
+    using dealii::SymmetricTensor;
+    const auto samples_3d = tensor_samples(false), samples_plane = tensor_samples(true);
+    std::printf(
+        "\nCPU ns per call of the tensor functions (best of 3 x %d calls, 64 tensors; plane: "
+        "x_3 principal)\n",
+        n);
+    std::printf("%-32s %10s %10s\n", "function", "3D", "plane");
+    const auto row = [&](const char *name, const auto &f)
+    {
+      std::printf("%-32s %10.0f %10.0f\n",
+                  name,
+                  time_tensor_function(samples_3d, n, f),
+                  time_tensor_function(samples_plane, n, f));
+    };
+    row("spectral_decomposition",
+        [](const SymmetricTensor<2, 3> &X) { return spectral_decomposition(X).vectors[0][0]; });
+    row("logarithm", [](const SymmetricTensor<2, 3> &X) { return logarithm(X)[0][1]; });
+    row("logarithm + derivative",
+        [](const SymmetricTensor<2, 3> &X)
+        {
+          SymmetricTensor<4, 3> D;
+          return logarithm(X, &D)[0][1] + D[0][1][0][1];
+        });
+    row("exponential", [](const SymmetricTensor<2, 3> &X) { return exponential(X)[0][1]; });
+    row("exponential + derivative",
+        [](const SymmetricTensor<2, 3> &X)
+        {
+          SymmetricTensor<4, 3> D;
+          return exponential(X, &D)[0][1] + D[0][1][0][1];
+        });
+    row("polar_decomposition",
+        [](const SymmetricTensor<2, 3> &X)
+        {
+          Tensor<2, 3>          R;
+          SymmetricTensor<2, 3> U;
+          Tensor<2, 3>          F = X;
+          F[0][1] += 0.1;
+          polar_decomposition(F, R, U);
+          return R[0][1] + U[0][0];
+        });
   }
 } // namespace
 
@@ -101,7 +213,7 @@ int main(int argc, char **argv)
   MaterialParameters steel_kinematic = steel;
   steel_kinematic.kinematic_hardening_modulus = 5000.;
 
-  std::printf("ns per evaluation (best of 3 x %d evaluations)\n", n);
+  std::printf("CPU ns per evaluation (best of 3 x %d evaluations)\n", n);
   std::printf("%-20s %-6s %14s %14s %14s %14s %12s\n",
               "kinematics",
               "H_k",
@@ -150,5 +262,6 @@ int main(int argc, char **argv)
                   t_plastic,
                   allocations);
     }
+  time_tensor_functions(n);
   return 0;
 }

@@ -1,12 +1,26 @@
 #include <ausroll/material/finite_strain_log_model.h>
 #include <ausroll/material/tensor_functions.h>
 
+#include <array>
 #include <cmath>
 
 namespace ausroll::material
 {
   using dealii::SymmetricTensor;
   using dealii::Tensor;
+
+  namespace
+  {
+    /** The raw index of entry (i, j) of a SymmetricTensor<2, 3>. */
+    constexpr unsigned int raw_index[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+
+    /**
+     * Off-diagonal entries of eps_e in the eigenbasis of b^trial up to this size (eps_e is a
+     * logarithmic strain, dimensionless) are taken as round-off: dropping them changes b_e =
+     * exp(2 eps_e) by a relative 4e-15, about 20 machine epsilons.
+     */
+    constexpr double coaxial_tolerance = 2e-15;
+  } // namespace
 
   FiniteStrainLogModel::FiniteStrainLogModel(std::unique_ptr<PlasticityModel> plasticity)
       : stress_return(std::move(plasticity))
@@ -56,11 +70,30 @@ namespace ausroll::material
     state.deformation_gradient = F;
     if (r.plastic)
     {
-      // exponential map: b_e = exp(2 (eps_e^trial - Delta eps_p)); output ln(C_p) / 2
-      state.elastic_left_cauchy_green = exponential(2. * (eps_trial - r.plastic_strain_increment));
-      state.plastic_strain = 0.5
-                             * logarithm(rotate(dealii::transpose(F),
-                                                dealii::invert(state.elastic_left_cauchy_green)));
+      // exponential map: b_e = exp(2 eps_e) with eps_e = eps_e^trial - Delta eps_p; output
+      // ln(C_p) / 2 with C_p = F^T b_e^-1 F
+      const SymmetricTensor<2, 3> eps_e = eps_trial - r.plastic_strain_increment;
+      std::array<double, 3>       e;
+      SymmetricTensor<2, 3>       b_e_inv;
+      if (diagonal_in_eigenbasis(spectral, eps_e, coaxial_tolerance, e))
+      {
+        // eps_e shares the eigenvectors of b^trial (isotropic elasticity and a return along
+        // dev tau^trial, e.g. von Mises without back stress): no second decomposition
+        std::array<double, 3> b, b_inv;
+        for (unsigned int a = 0; a < 3; ++a)
+        {
+          b[a] = std::exp(2. * e[a]);
+          b_inv[a] = 1. / b[a];
+        }
+        state.elastic_left_cauchy_green = spectral_sum(spectral, b);
+        b_e_inv = spectral_sum(spectral, b_inv);
+      }
+      else
+      {
+        state.elastic_left_cauchy_green = exponential(2. * eps_e);
+        b_e_inv = dealii::invert(state.elastic_left_cauchy_green);
+      }
+      state.plastic_strain = 0.5 * logarithm(rotate(dealii::transpose(F), b_e_inv));
     }
     else
     {
@@ -72,9 +105,20 @@ namespace ausroll::material
       return;
 
     // d tau / d b^trial = D : (d ln b / d b) / 2 =: K / 2; with d b^trial = 2 sym(dF C_p,n^-1 F^T)
-    // the direction dF = e_k (x) e_L gives d tau_ij = sum_n K_ijkn (F C_p,n^-1)_nL.
-    const SymmetricTensor<4, 3> K = r.tangent * dlog_db;
-    const Tensor<2, 3>          FG = F * Tensor<2, 3>(Cp_inv);
+    // the direction dF = e_k (x) e_L gives d tau_ij = sum_n K_ijkn (F C_p,n^-1)_nL (minor
+    // symmetry of K), evaluated on the raw 6 x 6 storage of K.
+    double K[6][6]; // r.tangent : dlog_db on the raw entries (off-diagonal pairs count twice)
+    for (unsigned int p = 0; p < 6; ++p)
+      for (unsigned int q = 0; q < 6; ++q)
+      {
+        double off = 0., diagonal = 0.;
+        for (unsigned int m = 0; m < 3; ++m)
+          diagonal += r.tangent.access_raw_entry(6 * p + m) * dlog_db.access_raw_entry(6 * m + q);
+        for (unsigned int m = 3; m < 6; ++m)
+          off += r.tangent.access_raw_entry(6 * p + m) * dlog_db.access_raw_entry(6 * m + q);
+        K[p][q] = 2. * off + diagonal;
+      }
+    const Tensor<2, 3> FG = F * Tensor<2, 3>(Cp_inv);
 
     // Back-stress rotation: d(dR) = dR Omega with (tr dU I - dU) omega = axial(dR^T df - df^T dR)
     // (polar decomposition f = dR dU). With df = e_k (x) g_L (g_L = row L of F_n^-1) the right side
@@ -94,13 +138,17 @@ namespace ausroll::material
     }
 
     for (unsigned int k = 0; k < 3; ++k)
+    {
+      double K_k[6][3]; // K_(p)(kn)
+      for (unsigned int p = 0; p < 6; ++p)
+        for (unsigned int n = 0; n < 3; ++n)
+          K_k[p][n] = K[p][raw_index[k][n]];
       for (unsigned int L = 0; L < 3; ++L)
       {
-        // sym(e_k (x) c) with c = column L of F C_p,n^-1
-        SymmetricTensor<2, 3> direction;
-        for (unsigned int n = 0; n < 3; ++n)
-          direction[k][n] = (n == k ? 1. : 0.5) * FG[n][L];
-        SymmetricTensor<2, 3> d_tau = K * direction;
+        SymmetricTensor<2, 3> d_tau;
+        for (unsigned int p = 0; p < 6; ++p)
+          d_tau.access_raw_entry(p)
+              = K_k[p][0] * FG[0][L] + K_k[p][1] * FG[1][L] + K_k[p][2] * FG[2][L];
 
         if (rotate_back_stress)
         {
@@ -119,10 +167,11 @@ namespace ausroll::material
           {
             double s = 0.;
             for (unsigned int j = 0; j < 3; ++j)
-              s += d_tau[i][j] * F_inv[Jj][j];
+              s += d_tau.access_raw_entry(raw_index[i][j]) * F_inv[Jj][j];
             (*tangent)[i][Jj][k][L] = s - P[i][L] * F_inv[Jj][k];
           }
       }
+    }
   }
 
   double FiniteStrainLogModel::yield_function(const MaterialState &state) const

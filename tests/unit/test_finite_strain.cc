@@ -1,7 +1,8 @@
 // Unit tests of the large-deformation material points (total Lagrangian, updated Lagrangian with
-// Jaumann rate, multiplicative finite strain with logarithmic elastic strain) and of the tensor
-// functions they use: consistent tangents against central finite differences, objectivity,
-// small-strain limit, closed-form large-strain uniaxial and simple-shear responses, plane stress.
+// Jaumann rate, multiplicative finite strain with logarithmic elastic strain): consistent tangents
+// against central finite differences, objectivity, small-strain limit, closed-form large-strain
+// uniaxial and simple-shear responses, plane stress. The tensor functions they use are tested in
+// test_tensor_functions.cc.
 #include <ausroll/core/exceptions.h>
 #include <ausroll/material/constitutive_model.h>
 #include <ausroll/material/finite_strain_log_model.h>
@@ -131,98 +132,6 @@ namespace
     return std::sqrt(1.5 * (d * d));
   }
 } // namespace
-
-// ------------------------------------------------------------------------------ tensor functions
-
-TEST(TensorFunctions, LogarithmAndExponentialDerivativesMatchFiniteDifferences)
-{
-  // Random SPD tensors, tensors with exactly and nearly repeated eigenvalues and the identity.
-  std::mt19937                           rng(7);
-  std::uniform_real_distribution<double> u(-1., 1.);
-  std::vector<SymmetricTensor<2, 3>>     samples;
-  samples.push_back(dealii::unit_symmetric_tensor<3>());
-  for (const double split : {0., 1e-12, 1e-8, 1e-5, 0.3})
-  {
-    // eigenvalues 1.4, 1.4 + split, 0.7 in a rotated frame
-    const Tensor<2, 3>    R = rotation(0.9, vec(1., -2., 0.5));
-    SymmetricTensor<2, 3> diag;
-    diag[0][0] = 1.4;
-    diag[1][1] = 1.4 + split;
-    diag[2][2] = 0.7;
-    samples.push_back(rotate(R, diag));
-  }
-  for (int s = 0; s < 10; ++s)
-  {
-    Tensor<2, 3> G;
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int j = 0; j < 3; ++j)
-        G[i][j] = (i == j ? 1. : 0.) + 0.4 * u(rng);
-    samples.push_back(dealii::symmetrize(G * dealii::transpose(G)));
-  }
-
-  double max_log = 0., max_exp = 0., max_roundtrip = 0.;
-  for (const auto &X : samples)
-  {
-    SymmetricTensor<4, 3>       dlog, dexp;
-    const SymmetricTensor<2, 3> lnX = logarithm(X, &dlog);
-    const SymmetricTensor<2, 3> expX = exponential(X, &dexp);
-    max_roundtrip = std::max(max_roundtrip, (exponential(lnX) - X).norm() / X.norm());
-    const double h = 1e-6;
-    for (unsigned int k = 0; k < 3; ++k)
-      for (unsigned int l = k; l < 3; ++l)
-      {
-        SymmetricTensor<2, 3> dX;
-        dX[k][l] = 1.;
-        const SymmetricTensor<2, 3> fd_log
-            = (logarithm(X + h * dX) - logarithm(X - h * dX)) / (2. * h);
-        const SymmetricTensor<2, 3> fd_exp
-            = (exponential(X + h * dX) - exponential(X - h * dX)) / (2. * h);
-        max_log = std::max(max_log, (fd_log - dlog * dX).norm() / (dlog * dX).norm());
-        max_exp = std::max(max_exp, (fd_exp - dexp * dX).norm() / (dexp * dX).norm());
-      }
-    (void)expX;
-  }
-  std::printf("[ tensor functions ] d ln / dX FD error %.2e, d exp / dX FD error %.2e, "
-              "|exp(ln X) - X| / |X| %.2e\n",
-              max_log,
-              max_exp,
-              max_roundtrip);
-  EXPECT_LT(max_log, 1e-8);
-  EXPECT_LT(max_exp, 1e-8);
-  EXPECT_LT(max_roundtrip, 1e-14);
-
-  // at X = I the derivative of ln is the symmetric identity
-  SymmetricTensor<4, 3> dlog_I;
-  logarithm(dealii::unit_symmetric_tensor<3>(), &dlog_I);
-  EXPECT_LT((dlog_I - dealii::identity_tensor<3>()).norm(), 1e-14);
-}
-
-TEST(TensorFunctions, AddOuterProductEqualsDealIIOuterProduct)
-{
-  SymmetricTensor<2, 3> A, B;
-  for (unsigned int i = 0; i < 3; ++i)
-    for (unsigned int j = i; j < 3; ++j)
-    {
-      A[i][j] = 1. + i + 3. * j;
-      B[i][j] = 0.5 - 2. * i + j * j;
-    }
-  SymmetricTensor<4, 3> D = dealii::identity_tensor<3>();
-  add_outer_product(D, 0.7, A, B);
-  const SymmetricTensor<4, 3> expected
-      = dealii::identity_tensor<3>() + 0.7 * dealii::outer_product(A, B);
-  EXPECT_LT((D - expected).norm(), 1e-14 * expected.norm());
-}
-
-TEST(TensorFunctions, PolarDecomposition)
-{
-  const Tensor<2, 3>    F = rotated_stretch(60., stretch(1.3, 0.8, 1.1, 0.25));
-  Tensor<2, 3>          R;
-  SymmetricTensor<2, 3> U;
-  polar_decomposition(F, R, U);
-  EXPECT_LT(relative_difference(Tensor<2, 3>(R * Tensor<2, 3>(U)), F), 1e-14);
-  EXPECT_LT(relative_difference(Tensor<2, 3>(dealii::transpose(R) * R), identity()), 1e-14);
-  EXPECT_NEAR(dealii::determinant(R), 1., 1e-14);
-}
 
 // ------------------------------------------------------------------------------ factory
 

@@ -20,7 +20,9 @@ namespace ausroll::material
    *   decomposition of the increment f = F F_n^-1 = Delta R Delta U, so that a superposed rigid
    *   rotation rotates everything exactly: beta^trial = Delta R beta_n Delta R^T;
    * - the PlasticityModel's return map gives tau, Delta eps_p; eps_e = eps_e^trial - Delta eps_p,
-   *   b_e = exp(2 eps_e) (exponential map: plastically volume preserving);
+   *   b_e = exp(2 eps_e) (exponential map: plastically volume preserving); when eps_e is diagonal
+   *   in the eigenvectors of b^trial up to round-off (isotropic elasticity and a return along
+   *   dev tau^trial, as von Mises without back stress), exp and b_e^-1 reuse that decomposition;
    * - sigma = tau / J, P = tau F^-T.
    *
    * The yield function is evaluated with the Kirchhoff stress tau (as usual for this model), so in

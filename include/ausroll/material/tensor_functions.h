@@ -17,7 +17,9 @@ namespace ausroll::material
    * Eigenvalues and orthonormal eigenvectors of a symmetric 3x3 tensor X = sum_a x_a n_a (x) n_a.
    * The decomposition is computed for the deviator X - s I with s = tr X / 3 (so that the
    * eigenvalue differences, which the derivatives divide by, are accurate also for X close to a
-   * multiple of the identity); @ref shifted_values keeps x_a - s.
+   * multiple of the identity); @ref shifted_values keeps x_a - s. When eigenvalues coincide, the
+   * eigenvectors are one orthonormal basis of their eigenspace (any is right for an isotropic
+   * function).
    */
   struct SpectralDecomposition
   {
@@ -27,12 +29,28 @@ namespace ausroll::material
     std::array<dealii::Tensor<1, 3>, 3> vectors;        ///< unit eigenvectors n_a
   };
 
-  /** Spectral decomposition of @p X (deal.II's QL algorithm with implicit shifts). */
+  /**
+   * Spectral decomposition of @p X in closed form (Scherzinger & Dohrmann 2008: the most distinct
+   * eigenvalue from the invariants, its eigenvector from cross products, the other two by one
+   * Jacobi rotation; robust for equal and nearly equal eigenvalues, no iteration). A NaN entry
+   * gives NaN eigenvalues.
+   */
   SpectralDecomposition spectral_decomposition(const dealii::SymmetricTensor<2, 3> &X);
 
   /** sum_a f_a n_a (x) n_a for the eigenvectors n_a of @p s (an isotropic function's value). */
   dealii::SymmetricTensor<2, 3> spectral_sum(const SpectralDecomposition &s,
                                              const std::array<double, 3> &f);
+
+  /**
+   * The diagonal entries y_a = n_a . Y n_a of @p Y in the eigenbasis n_a of @p s, if its
+   * off-diagonal entries n_a . Y n_b (a != b) are at most @p tolerance in magnitude; returns
+   * false (and leaves @p y unspecified) otherwise. Then Y = sum_a y_a n_a (x) n_a up to those
+   * entries, and an isotropic function of Y reuses the eigenvectors of @p s (spectral_sum()).
+   */
+  bool diagonal_in_eigenbasis(const SpectralDecomposition         &s,
+                              const dealii::SymmetricTensor<2, 3> &Y,
+                              double                               tolerance,
+                              std::array<double, 3>               &y);
 
   /**
    * The matrix logarithm ln X of a symmetric positive definite @p X; if @p derivative is not null,
@@ -53,6 +71,10 @@ namespace ausroll::material
    * d exp X / d X (divided differences (e^x_a - e^x_b) / (x_a - x_b) via expm1; limit e^x).
    */
   dealii::SymmetricTensor<2, 3> exponential(const dealii::SymmetricTensor<2, 3> &X,
+                                            dealii::SymmetricTensor<4, 3> *derivative = nullptr);
+
+  /** As exponential(X, derivative), for the already computed decomposition @p s of X. */
+  dealii::SymmetricTensor<2, 3> exponential(const SpectralDecomposition   &s,
                                             dealii::SymmetricTensor<4, 3> *derivative = nullptr);
 
   /**
