@@ -5,7 +5,8 @@ Usage: check_input_mode.py AUSROLL SOURCE_DIR
 
 prm/disk_rolling_quick.prm (2D) and prm/upsetting_3d.prm (3D) must exit 0, print the size lines
 (cells, DoFs, quadrature points, estimated memory, load steps) with the cell count of the
-mesh, and leave the working directory as it was (no output directory); the same scene with a
+mesh, the measured cost of one Newton iteration (a positive CPU time) and the estimated time per
+step as a range (low < high; how good the range is, is a benchmark, not this test), and leave the working directory as it was (no output directory); the same scene with a
 refused entry (Model/Quadrature points = 1 with Q2) must exit 2 with the entry named, again
 writing nothing.
 """
@@ -42,6 +43,12 @@ def main():
                       "load steps:"):
             if label not in text:
                 problems.append(f"no '{label}' line")
+        iteration = re.search(r"one Newton iteration:\s+([0-9.e+-]+) s CPU", text)
+        if not iteration or not float(iteration.group(1)) > 0:
+            problems.append("no measured Newton iteration")
+        per_step = re.search(r"time per step:\s+([0-9.e+-]+) to ([0-9.e+-]+) s CPU", text)
+        if not per_step or not 0 < float(per_step.group(1)) < float(per_step.group(2)):
+            problems.append("no time per step range")
         cells = re.search(r"cells:\s+([0-9.e+]+)", text)
         if not cells or float(cells.group(1)) < 1:
             problems.append("no cell count")

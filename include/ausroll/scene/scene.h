@@ -60,10 +60,12 @@ namespace ausroll::scene
 
     /**
      * `--check-input`: print the sizes of the discretisation (cells, DoFs, quadrature points,
-     * matrix entries, estimated memory, nominal load steps) to @p out (rank 0).
-     * Defined in check_input.cc.
+     * matrix entries, estimated memory, nominal load steps) to @p out (rank 0), and the cost of
+     * one Newton iteration measured here (one assembly of residual and tangent and one linear
+     * solve at the first nominal step, nothing committed) with the estimate per load step it
+     * gives. Defined in check_input.cc.
      */
-    void print_sizes(std::ostream &out) const;
+    void print_sizes(std::ostream &out);
 
     /**
      * Run all load steps. Throws RunFailure (after writing the last converged state) when a step
