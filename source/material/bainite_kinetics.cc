@@ -50,7 +50,12 @@ namespace ausroll::material
 
   double BainiteKinetics::rate(const double T) const
   {
-    return -std::log(0.99) / std::pow(start_time.value(T), exponent(T));
+    return rate(T, exponent(T));
+  }
+
+  double BainiteKinetics::rate(const double T, const double n) const
+  {
+    return -std::log(0.99) / std::pow(start_time.value(T), n);
   }
 
   double BainiteKinetics::advance(const double xi_old, const double T, const double dt) const
@@ -58,7 +63,7 @@ namespace ausroll::material
     if (!in_range(T) || !(dt > 0.) || xi_old >= 1.)
       return xi_old;
     const double n = exponent(T);
-    const double k = rate(T);
+    const double k = rate(T, n);
     const double t_star = xi_old > 0. ? std::pow(-std::log1p(-xi_old) / k, 1. / n) : 0.;
     return std::max(xi_old, -std::expm1(-k * std::pow(t_star + dt, n)));
   }

@@ -27,7 +27,8 @@ namespace ausroll::material
     ReturnMappingResult result;
     result.stress = trial_stress;
     result.back_stress = back_stress_old;
-    result.tangent = stiffness_at(temperature);
+    std::optional<SymmetricTensor<4, 3>> storage;
+    result.tangent = stiffness_at(temperature, storage);
     return result;
   }
 
@@ -41,7 +42,8 @@ namespace ausroll::material
   VonMisesPlasticity::back_stress_sensitivity(const ReturnMappingResult &result,
                                               const double               temperature) const
   {
-    return (stiffness_at(temperature) - result.tangent)
+    std::optional<SymmetricTensor<4, 3>> storage;
+    return (stiffness_at(temperature, storage) - result.tangent)
            / (2. * elasticity(temperature).shear_modulus);
   }
 
@@ -86,13 +88,14 @@ namespace ausroll::material
                                                      const double                 alpha_old,
                                                      const double                 temperature) const
   {
-    ReturnMappingResult         result;
-    const double                mu = elasticity(temperature).shear_modulus;
-    const SymmetricTensor<4, 3> C = stiffness_at(temperature);
-    const HardeningLaw          law = hardening_at(temperature);
-    const double                H_k = hardening_depends_on_temperature
-                                          ? parameters.kinematic_hardening_modulus.value(temperature)
-                                          : kinematic_modulus;
+    ReturnMappingResult                  result;
+    const double                         mu = elasticity(temperature).shear_modulus;
+    std::optional<SymmetricTensor<4, 3>> C_storage;
+    const SymmetricTensor<4, 3>         &C = stiffness_at(temperature, C_storage);
+    const HardeningLaw                   law = hardening_at(temperature);
+    const double                         H_k = hardening_depends_on_temperature
+                                                   ? parameters.kinematic_hardening_modulus.value(temperature)
+                                                   : kinematic_modulus;
 
     const SymmetricTensor<2, 3> eta_trial = dealii::deviator(trial_stress) - back_stress_old;
     const double                norm_eta = std::sqrt(eta_trial * eta_trial);

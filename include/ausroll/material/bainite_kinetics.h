@@ -54,6 +54,9 @@ namespace ausroll::material
     /** Rate constant k at @p T (1/s^n, inside the range). */
     double rate(const double T) const;
 
+    /** k at @p T for its exponent @p n (= exponent(T), computed once by the caller). */
+    double rate(const double T, const double n) const;
+
     /** True if @p T lies in the bainite range of the tables. */
     bool in_range(const double T) const { return enabled && T >= lowest && T <= highest; }
 

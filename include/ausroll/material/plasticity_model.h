@@ -14,6 +14,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <memory>
+#include <optional>
 
 namespace ausroll::material
 {
@@ -118,12 +119,15 @@ namespace ausroll::material
     }
 
   protected:
-    /** The elasticity tensor C at @p temperature. */
-    dealii::SymmetricTensor<4, 3> stiffness_at(const double temperature) const
+    /** The elasticity tensor C at @p temperature: the stored one for constant moduli (no copy
+        on the material point's path), else computed into @p storage. */
+    const dealii::SymmetricTensor<4, 3> &
+    stiffness_at(const double                                  temperature,
+                 std::optional<dealii::SymmetricTensor<4, 3>> &storage) const
     {
       if (!elastic_depends_on_temperature)
         return stiffness;
-      return elasticity(temperature).stiffness();
+      return storage.emplace(elasticity(temperature).stiffness());
     }
 
     PropertyTable                 youngs_modulus;                 ///< E(T)
