@@ -652,3 +652,37 @@ TEST(TransformationPlasticity, BadEntriesNameTheEntry)
   EXPECT_NE(message("0", "300: 1100, 20: 1400").find("Phases/Martensite yield stress"),
             std::string::npos);
 }
+
+TEST(TransformationPlasticity, ElasticMaterialRelaxesByTrip)
+{
+  // Yield criterion none: TRIP alone, dev sigma = 2 mu dev eps / c with c = 1 + 2 mu kappa,
+  // kappa = 3/2 K phi(f) (small strain; the transformation strain is volumetric, so dev eps is
+  // the total one), to round-off; dP/dF of all four kinematics against central differences.
+  MaterialParameters elastic = steel();
+  elastic.yield_criterion = YieldCriterion::none;
+  const ThermalExpansionParameters thermal = expansion(0.);
+  const PhaseParameters            p = trip_phases(1e-4, false);
+  const Tensor<2, 3>               strain({{0.002, 0.001, 0.}, {0.001, -0.001, 0.}, {0., 0., 0.}});
+  for (const KinematicsType k : all_kinematics)
+  {
+    const auto    model = create_constitutive_model(k, elastic, false, &thermal, &p);
+    MaterialState old;
+    old.temperature = 60.;
+    old.carbon = 0.8;
+    if (k == KinematicsType::small_strain)
+    {
+      MaterialState state;
+      Tensor<2, 3>  P;
+      model->evaluate(identity() + strain, old, state, P, nullptr);
+      const double mu = 200000. / 2.6;
+      const double c
+          = 1. + 2. * mu * 1.5e-4 * TransformationPlasticity::leblond_phi(state.martensite);
+      const dealii::SymmetricTensor<2, 3> expected
+          = 2. * mu / c * dealii::deviator(dealii::symmetrize(strain));
+      EXPECT_GT(c, 10.);
+      EXPECT_LT((dealii::deviator(state.stress) - expected).norm(), 1e-12 * expected.norm());
+    }
+    EXPECT_LT(ausroll::testing::tangent_error(*model, old, identity() + strain), 1e-6)
+        << to_string(k);
+  }
+}
