@@ -452,6 +452,17 @@ namespace
     return p;
   }
 
+  /** A deviatoric back stress (MPa). */
+  dealii::SymmetricTensor<2, 3> some_back_stress()
+  {
+    dealii::SymmetricTensor<2, 3> beta;
+    beta[0][0] = 30.;
+    beta[1][1] = -10.;
+    beta[2][2] = -20.;
+    beta[0][1] = 15.;
+    return beta;
+  }
+
   /** A deviatoric-plus-pressure stress (MPa). */
   dealii::SymmetricTensor<2, 3> some_stress(const double scale)
   {
@@ -573,10 +584,7 @@ TEST(TransformationPlasticity, TangentsMatchFiniteDifferences)
           old.equivalent_plastic_strain = 0.01;
           if (back)
           {
-            old.back_stress[0][0] = 30.;
-            old.back_stress[1][1] = -10.;
-            old.back_stress[2][2] = -20.;
-            old.back_stress[0][1] = 15.;
+            old.back_stress = some_back_stress();
           }
           MaterialState state;
           Tensor<2, 3>  P;
@@ -596,6 +604,35 @@ TEST(TransformationPlasticity, TangentsMatchFiniteDifferences)
           EXPECT_LT(e_plastic, 1e-6) << to_string(k);
           EXPECT_LT(e_elastic, 1e-6) << to_string(k);
         }
+}
+
+TEST(TransformationPlasticity, PlaneStressTangentsMatchFiniteDifferences)
+{
+  // The PlaneStressDriver around the phase model (TRIP, mixture, back stress) condenses F_zz out
+  // of the tangent: the in-plane dP/dF against central differences of the in-plane F (as
+  // test_finite_strain.cc checks the driver), 1e-6 as above.
+  const ThermalExpansionParameters thermal = expansion(1.2e-5);
+  const PhaseParameters            p = trip_phases(2e-5, true);
+  MaterialParameters               kinematic = steel(1000.);
+  kinematic.kinematic_hardening_modulus = 5000.;
+  const Tensor<2, 3> F_plastic
+      = identity() + Tensor<2, 3>({{0.03, 0.01, 0.}, {0.005, -0.02, 0.}, {0., 0., 0.}});
+  for (const KinematicsType k : all_kinematics)
+  {
+    const auto    model = create_constitutive_model(k, kinematic, true, &thermal, &p);
+    MaterialState old;
+    old.temperature = 60.;
+    old.carbon = 0.8;
+    old.back_stress = some_back_stress();
+    MaterialState state;
+    Tensor<2, 3>  P;
+    model->evaluate(F_plastic, old, state, P, nullptr);
+    EXPECT_GT(state.equivalent_plastic_strain, 0.) << to_string(k);
+    EXPECT_LT(std::abs(P[2][2]), 1e-9 * 400.) << to_string(k);
+    const double error = ausroll::testing::in_plane_tangent_error(*model, old, F_plastic);
+    std::printf("[ %-18s ] plane stress: FD error %.2e\n", to_string(k).c_str(), error);
+    EXPECT_LT(error, 1e-6) << to_string(k);
+  }
 }
 
 TEST(TransformationPlasticity, DefaultsLeaveTheReturnMapUnchanged)
