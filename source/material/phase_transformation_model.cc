@@ -108,8 +108,9 @@ namespace ausroll::material
     mechanics.parse_parameters(prm, input_directory);
     prm.leave_subsection();
     require(enabled || !mechanics.active(),
-            mechanics.trip_coefficient > 0. ? "Phases/TRIP coefficient"
-                                            : "Phases/Martensite yield stress",
+            mechanics.trip_coefficient > 0.    ? "Phases/TRIP coefficient"
+            : mechanics.martensite_yield_given ? "Phases/Martensite yield stress"
+                                               : "Phases/Bainite yield stress",
             "acts on the transformation: set Phases/Enabled = true");
     require(!enabled || thermal,
             "Phases/Enabled",
