@@ -87,6 +87,7 @@ namespace ausroll::material
                       "Volume change austenite to bainite in per cent, an expression of C "
                       "(default lower bainite, 4.64 - 1.43 C; upper bainite 4.64 - 2.21 C: the "
                       "dilatometric relations of the ASM Handbook vol. 4, after Lement 1959).");
+    TransformationPlasticityParameters::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -104,7 +105,13 @@ namespace ausroll::material
     bainite_start = prm.get("Bainite start times");
     bainite_finish = prm.get("Bainite finish times");
     bainite_volume_change = prm.get("Bainite volume change");
+    mechanics.parse_parameters(prm, input_directory);
     prm.leave_subsection();
+    require(enabled || !mechanics.active(),
+            mechanics.trip_coefficient > 0.    ? "Phases/TRIP coefficient"
+            : mechanics.martensite_yield_given ? "Phases/Martensite yield stress"
+                                               : "Phases/Bainite yield stress",
+            "acts on the transformation: set Phases/Enabled = true");
     require(!enabled || thermal,
             "Phases/Enabled",
             "the transformation follows the temperature: set Thermal/Enabled = true");
@@ -186,11 +193,12 @@ namespace ausroll::material
     const double f_b = bainite_fraction(old.bainite, old.martensite, old.temperature, step_length);
     const double f = martensite_fraction(old.martensite, old.carbon, old.temperature, f_b);
     const double theta = transformation_stretch(f, old.carbon, f_b);
-    inner->evaluate(remove_stretch(F, theta), old, state, P, tangent);
-    scale_response(P, tangent, theta);
+    // the fractions at the end of the step first: the inner return map reads them (TRIP, mixture)
     state.martensite = f;
     state.bainite = f_b;
     state.carbon = old.carbon;
+    inner->evaluate(remove_stretch(F, theta), old, state, P, tangent);
+    scale_response(P, tangent, theta);
   }
 
   void PhaseTransformationModel::rebase(MaterialState &state, const Tensor<2, 3> &F) const

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <ausroll/material/bainite_kinetics.h>
+#include <ausroll/material/transformation_plasticity.h>
 #include <ausroll/material/wrapped_model.h>
 
 #include <deal.II/base/function_parser.h>
@@ -32,6 +33,9 @@ namespace ausroll::material
     std::string bainite_finish;
     /** `Bainite volume change` austenite to bainite in per cent, expression of C. */
     std::string bainite_volume_change = "4.64 - 1.43*C";
+    /** `TRIP coefficient`, `Martensite yield stress`, `Bainite yield stress`: the mechanics of
+        the transformation in the return map (TransformationPlasticity). */
+    TransformationPlasticityParameters mechanics;
     /** Folder of the `.prm` file (resolves `file:` tables). */
     std::string input_directory;
 
@@ -64,8 +68,10 @@ namespace ausroll::material
    *   martensite: f_B = xi (1 - f_M) with xi the kinetics' share; martensite then forms from the
    *   austenite left, f_M = max(f_M,old, (1 - f_B) KM(T)); its volume change f_B dV_B/V(C) adds
    *   to the martensite's in the stretch theta_tr = (1 + f_M dV_M/V + f_B dV_B/V)^(1/3).
-   * Not yet: transformation plasticity (TRIP), a mixture rule for the yield stress, the
-   * mechanical stabilisation of austenite.
+   * - the fractions of the step are written into the trial state before the inner model runs:
+   *   its return map reads them (PhaseStep::of(old, state)) for TRIP and the mixture rule of the
+   *   yield stress (`TRIP coefficient`, `Martensite yield stress`, TransformationPlasticity).
+   * Not yet: the mechanical stabilisation of austenite, the hardening memory of the austenite.
    */
   class PhaseTransformationModel : public WrappedModel
   {

@@ -9,3 +9,14 @@ configure_file(${AUSROLL_CHECKS_DIR}/scenes/gear_ausrolling_np2.prm.in
   ${CMAKE_CURRENT_BINARY_DIR}/gear_ausrolling_np2.prm @ONLY)
 ausroll_add_parallel_check(NAME gear_ausrolling_np2
   PRM ${CMAKE_CURRENT_BINARY_DIR}/gear_ausrolling_np2.prm HISTORY out/history.csv)
+
+# TRIP and the mixture rule of the yield stress (check_thermal.py cases trip and mixture): a block
+# cooled through Ms under a constant uniaxial stress against Leblond's closed form K sigma phi(f)
+# (small strain, 1e-6; finite strain: the discrete law, 1e-8), and compressed while it transforms
+# against the linear mixture of the yield stress in all four kinematics (1e-8). About 2 s.
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/thermal_trip)
+add_test(NAME check/thermal_trip
+  COMMAND ${Python3_EXECUTABLE} ${AUSROLL_CHECKS_DIR}/check_thermal.py $<TARGET_FILE:ausroll>
+          ${CMAKE_SOURCE_DIR} trip mixture
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/thermal_trip)
+set_tests_properties(check/thermal_trip PROPERTIES LABELS check TIMEOUT 900)
