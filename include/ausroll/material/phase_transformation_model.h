@@ -6,19 +6,20 @@
 #pragma once
 
 #include <ausroll/material/bainite_kinetics.h>
+#include <ausroll/material/carbon_function.h>
 #include <ausroll/material/wrapped_model.h>
 
-#include <deal.II/base/function_parser.h>
-
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace ausroll::material
 {
   /** The `Phases` subsection (martensite kinetics and transformation strain). */
   struct PhaseParameters
   {
-    bool        enabled = false;        ///< `Enabled`
+    bool enabled = false; ///< `Enabled`
     std::string carbon_content = "0.2"; ///< `Carbon content` (wt%, expression of x, y, z)
     /** `Martensite start temperature` Ms(C), expression of C (wt%); default Andrews' linear
         relation with the other elements of AISI 9310. */
@@ -109,12 +110,12 @@ namespace ausroll::material
     double transformation_stretch(const double f, const double C, const double f_b = 0.) const;
 
   private:
-    BainiteKinetics                            bainite;          ///< TTT kinetics (may be inactive)
-    std::unique_ptr<dealii::FunctionParser<1>> dv_bainite;       ///< dV/V(C) of bainite, per cent
-    double                                     step_length = 0.; ///< dt of the current step
+    BainiteKinetics               bainite;          ///< TTT kinetics (may be inactive)
+    std::optional<CarbonFunction> dv_bainite;       ///< dV/V(C) of bainite, per cent
+    double                        step_length = 0.; ///< dt of the current step
 
-    double                                     b;  ///< Koistinen-Marburger coefficient (1/K)
-    std::unique_ptr<dealii::FunctionParser<1>> ms; ///< Ms(C)
-    std::unique_ptr<dealii::FunctionParser<1>> dv; ///< dV/V(C) in per cent
+    double         b;  ///< Koistinen-Marburger coefficient (1/K)
+    CarbonFunction ms; ///< Ms(C)
+    CarbonFunction dv; ///< dV/V(C) in per cent
   };
 } // namespace ausroll::material
