@@ -24,8 +24,19 @@ namespace ausroll::material
     prm.declare_entry("Carbon content",
                       defaults.carbon_content,
                       Patterns::Anything(),
-                      "Carbon content in wt% (0 to 2.1), an expression of x, y (z in 3D): the "
-                      "carburized case, e.g. '0.2 + 0.8 * exp(-(50 - sqrt(x^2 + y^2)) / 0.8)'.");
+                      "Carbon content in wt% (0 to 2.1): an expression of x, y (z in 3D) and "
+                      "depth, the distance (mm) below the initial surface of the Case boundaries "
+                      "measured along its normal (exact on curved outlines: the involute flank, "
+                      "the circles), e.g. the carburized case '0.2 + 0.7 * erfc(depth / 0.6)'; or "
+                      "'file: NAME.csv', a table of two columns depth, C (depths increasing; "
+                      "linear between the rows, constant beyond them).");
+    prm.declare_entry("Case boundaries",
+                      "",
+                      Patterns::Anything(),
+                      "Boundary ids of the workpiece whose initial outline the depth of Carbon "
+                      "content is measured from (the carburized surface). Empty: the Candidate "
+                      "boundaries of all dies (the surface the dies roll); used only if the "
+                      "carbon content uses the depth.");
     prm.declare_entry("Martensite start temperature",
                       defaults.martensite_start,
                       Patterns::Anything(),
@@ -74,6 +85,7 @@ namespace ausroll::material
     prm.enter_subsection("Phases");
     enabled = prm.get_bool("Enabled");
     carbon_content = prm.get("Carbon content");
+    case_boundaries = parse_unsigned_list(prm.get("Case boundaries"), "Phases/Case boundaries");
     martensite_start = prm.get("Martensite start temperature");
     koistinen_marburger = prm.get_double("Koistinen-Marburger coefficient");
     volume_change = prm.get("Transformation volume change");

@@ -20,7 +20,12 @@ namespace ausroll::material
   struct PhaseParameters
   {
     bool enabled = false; ///< `Enabled`
-    std::string carbon_content = "0.2"; ///< `Carbon content` (wt%, expression of x, y, z)
+    /** `Carbon content` (wt%): an expression of x, y, z and depth, or `file: NAME.csv` of C
+        against depth (material::CarbonProfile). */
+    std::string carbon_content = "0.2";
+    /** `Case boundaries`: the boundary ids whose initial outline the depth is measured from
+        (empty: the Candidate boundaries of the dies). */
+    std::vector<unsigned int> case_boundaries;
     /** `Martensite start temperature` Ms(C), expression of C (wt%); default Andrews' linear
         relation with the other elements of AISI 9310. */
     std::string martensite_start = "539 - 423*C - 30.4*0.55 - 17.7*3.25 - 12.1*1.2 - 7.5*0.12";
