@@ -9,3 +9,10 @@ configure_file(${AUSROLL_CHECKS_DIR}/scenes/gear_ausrolling_np2.prm.in
   ${CMAKE_CURRENT_BINARY_DIR}/gear_ausrolling_np2.prm @ONLY)
 ausroll_add_parallel_check(NAME gear_ausrolling_np2
   PRM ${CMAKE_CURRENT_BINARY_DIR}/gear_ausrolling_np2.prm HISTORY out/history.csv)
+
+# The carburized case: a free bar with a carbon gradient through its thickness (Phases/Carbon
+# content in the depth below one face) transforming to martensite on cooling, elastic: curvature,
+# mean strain and axial stress against the beam with an eigenstrain, 1 % (measured 0.26 %)
+# (tests/checks/check_carburized_bar.py). About 3 s wall.
+ausroll_add_script_check(NAME carburized_bar SCRIPT ${AUSROLL_CHECKS_DIR}/check_carburized_bar.py)
+set_property(TEST check/carburized_bar APPEND PROPERTY LABELS quick)
