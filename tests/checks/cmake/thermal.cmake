@@ -9,3 +9,10 @@ configure_file(${AUSROLL_CHECKS_DIR}/scenes/gear_ausrolling_np2.prm.in
   ${CMAKE_CURRENT_BINARY_DIR}/gear_ausrolling_np2.prm @ONLY)
 ausroll_add_parallel_check(NAME gear_ausrolling_np2
   PRM ${CMAKE_CURRENT_BINARY_DIR}/gear_ausrolling_np2.prm HISTORY out/history.csv)
+
+# Process stages (tests/checks/check_stages.py on scenes/stage_quench.prm: a block quenched into
+# a bath, held, cooled in air: the lumped closed form per stage, the stage ends as step ends, the
+# history's stage column, one stage against none, a resume in the cooling stage on 1 and 2
+# ranks). About 9 s.
+ausroll_add_script_check(NAME stages SCRIPT ${AUSROLL_CHECKS_DIR}/check_stages.py)
+set_tests_properties(check/stages PROPERTIES PROCESSORS 2)
