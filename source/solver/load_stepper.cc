@@ -63,7 +63,10 @@ namespace ausroll::solver
       stage_step = h;
       if (std::abs(t_done - start) <= 1e-10 * std::abs(stages->stages.back().end_time))
       {
+        // a stage switches conditions: its first step starts from the converged state, without
+        // extrapolating the last stage's increment
         dt = h;
+        last_step_size = 0.;
         log << "Stage " << k << " (" << stage.name << "): t = " << start << " to " << stage.end_time
             << ", step " << h << std::endl;
       }

@@ -522,3 +522,22 @@ TEST(LoadStepper, StagesResumeInsideAStage)
             std::string::npos)
       << staged.logs.text.str();
 }
+
+// The first step of a stage is solved without the predictor (the increment of the stage before
+// says nothing of the new conditions: 0.25 / 0.125 would extrapolate it twice), later steps with
+// it.
+TEST(LoadStepper, StagesStartWithoutThePredictor)
+{
+  Logs              logs;
+  LoadingParameters l = loading();
+  l.predictor = Predictor::linear_extrapolation;
+  LoadStepper           stepper(l, "out", logs.log, logs.detail_log);
+  const StageParameters stages = three_stages();
+  stepper.set_stages(&stages);
+  MockProblem p;
+  stepper.run(p, 0., stepper.nominal_step_size(), 0);
+  ASSERT_EQ(p.solves.size(), 7u);
+  const std::vector<double> ratios{0., 1., 1., 0., 0., 1., 0.125 / 0.1875};
+  for (unsigned int i = 0; i < ratios.size(); ++i)
+    EXPECT_EQ(p.solves[i].ratio, ratios[i]) << "solve " << i;
+}

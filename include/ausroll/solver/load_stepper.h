@@ -176,7 +176,9 @@ namespace ausroll::solver
     /**
      * With stages: the next grid point after @p t_done and the end of the stage the step from
      * @p t_done lies in. Where the stepper enters a stage, it logs the stage (at its start:
-     * "Stage k (name): t = a to b, step h", and sets @p dt to the stage's step; inside it, as
+     * "Stage k (name): t = a to b, step h", sets @p dt to the stage's step and solves the
+     * stage's first step without the predictor (the last stage's increment says nothing of the
+     * path under the new conditions); inside it, as
      * after a resume: "resuming in stage k (name)").
      */
     std::pair<double, double> stage_targets(const double t_done, double &dt);
