@@ -21,6 +21,11 @@ whose reference position lies on the involute part of the chosen flank, computes
   the reference point pointing towards the tip (u_t > 0: material moved towards the tip);
 * the contact pressure p_n.
 
+With --scale S the current positions are divided by S before they are measured: against the
+design involute at another temperature (a gear modelled at the reference temperature T_ref and
+cooled uniformly to T: S = 1 + alpha (T - T_ref), the free thermal contraction about the centre;
+u_t is taken from the scaled positions too).
+
 Writes OUTPUT_DIR/flank_deviation.csv (step,time,R,roll_angle,d_n,u_t,p_n; R and the roll angle
 u = sqrt(R^2/r_b^2 - 1) of the reference point) and, with --plot, a PNG of d_n and u_t against R
 for every step. Prints a summary: the final extreme deviations and the mean u_t over the flank near
@@ -84,6 +89,10 @@ def add_gear_options(parser):
                         help="start of active profile, the SAP end of L_alpha (mm; 0: lowest flank node)")
     parser.add_argument("--tip-chamfer-radius", type=float, default=0.0,
                         help="start of the tip chamfer, the tip end of L_alpha (mm; 0: highest flank node)")
+    parser.add_argument("--scale", type=float, default=1.0,
+                        help="current positions divided by this factor before they are measured: the "
+                             "design profile at another temperature (1 + alpha (T - T_ref) for a gear "
+                             "cooled uniformly from the reference temperature T_ref of its geometry)")
     parser.add_argument("--evaluation-fraction", type=float, default=1.0,
                         help="L_alpha as this fraction of the roll length from the SAP to the tip chamfer")
 
@@ -97,6 +106,7 @@ class Flank:
         self.sign = 1.0 if args.flank == "positive" else -1.0
         self.min_radius = args.min_radius
         self.tolerance = args.tolerance
+        self.scale = args.scale
 
     def measure(self, X, x):
         """(R, roll angle u, d_n, u_t) of a node with reference position X and current position x
@@ -110,6 +120,7 @@ class Flank:
         # VTU coordinates are single precision: 1e-6 relative is about 5e-5 mm
         if abs(sign * phi_ref - self.theta_h(R)) * R > self.tolerance:
             return None
+        x = (x[0] / self.scale, x[1] / self.scale)
         r = math.hypot(x[0], x[1])
         phi = math.remainder(math.atan2(x[1], x[0]) - self.axis, 2.0 * math.pi)
         d_n = rb * (sign * phi - self.theta_h(r)) if r > rb else float("nan")

@@ -312,7 +312,9 @@ namespace ausroll::scene
       adapt_mesh(std::min(t_end, step.time + step.step_size));
 
     const unsigned int interval = parameters.output.interval;
-    if (interval > 0 && step_number % interval == 0)
+    // and at the end of every process stage (the rolled state, the cooled state, ...)
+    if ((interval > 0 && step_number % interval == 0)
+        || (parameters.stages.declared() && parameters.stages.ends_stage(step.time)))
       write_output();
     if (parameters.checkpoint.interval > 0 && step_number % parameters.checkpoint.interval == 0)
       write_checkpoint(step.step_size);

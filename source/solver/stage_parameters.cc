@@ -70,6 +70,15 @@ namespace ausroll::solver
     return stages.size() - 1;
   }
 
+  bool StageParameters::ends_stage(const double t) const
+  {
+    const double tolerance = 1e-10 * std::abs(stages.back().end_time);
+    for (const Stage &stage : stages)
+      if (std::abs(stage.end_time - t) <= tolerance)
+        return true;
+    return false;
+  }
+
   double StageParameters::step_size(const unsigned int k, const double loading_step) const
   {
     return stages[k].step_size > 0. ? stages[k].step_size : loading_step;

@@ -57,6 +57,9 @@ namespace ausroll::solver
      */
     unsigned int stage_at(const double t_start) const;
 
+    /** Whether @p t is the end time of a stage (to 1e-10 of the last end time). */
+    bool ends_stage(const double t) const;
+
     /** Nominal step size of stage @p k: its `Step size` or @p loading_step. */
     double step_size(const unsigned int k, const double loading_step) const;
 
