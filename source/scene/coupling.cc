@@ -35,6 +35,11 @@ namespace ausroll::scene
                                                             contact.n_dies(),
                                                             comm);
     thermal->check_die_temperatures(parameters.loading.end_time);
+    // every stage's expressions parsed now, so that an error comes before the run; then stage 0
+    const auto &stages = parameters.stages.stages;
+    for (unsigned int k = stages.size(); k-- > 0;)
+      thermal->set_conditions(stages[k].thermal_conditions,
+                              "Stages/Stage " + std::to_string(k) + "/Thermal condition values");
     thermal->setup();
   }
 
@@ -79,6 +84,12 @@ namespace ausroll::scene
   void Scene<dim>::thermal_step(const solver::LoadStep &step)
   {
     TimerOutput::Scope scope(*timer, "thermal");
+    if (parameters.stages.declared())
+    {
+      const unsigned int k = parameters.stages.stage_at(step.t_start);
+      thermal->set_conditions(parameters.stages.stages[k].thermal_conditions,
+                              "Stages/Stage " + std::to_string(k) + "/Thermal condition values");
+    }
     thermal->solve_step(step.time,
                         step.time - step.t_start,
                         system.dof_handler,

@@ -27,3 +27,10 @@ set_tests_properties(check/thermal_trip PROPERTIES LABELS check TIMEOUT 900)
 # (tests/checks/check_carburized_bar.py). About 3 s wall.
 ausroll_add_script_check(NAME carburized_bar SCRIPT ${AUSROLL_CHECKS_DIR}/check_carburized_bar.py)
 set_property(TEST check/carburized_bar APPEND PROPERTY LABELS quick)
+
+# Process stages (tests/checks/check_stages.py on scenes/stage_quench.prm: a block quenched into
+# a bath, held, cooled in air: the lumped closed form per stage, the stage ends as step ends, the
+# history's stage column, one stage against none, a resume in the cooling stage on 1 and 2
+# ranks). About 9 s.
+ausroll_add_script_check(NAME stages SCRIPT ${AUSROLL_CHECKS_DIR}/check_stages.py)
+set_tests_properties(check/stages PROPERTIES PROCESSORS 2)
