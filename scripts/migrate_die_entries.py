@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Move the entries of old files into the subsections of their shape, law, motion or strategy (in
-place).
+"""Move the entries of old files into the subsections of their shape, law, motion, strategy or step
+control (in place).
 
   scripts/migrate_die_entries.py FILE.prm [FILE.md ...]
 
@@ -24,9 +24,10 @@ takes no factor). The `Profile` subsection of `Revolved profile` and `Extruded p
 motion: `Translation`, `Rotation`, `Pivot` to `Prescribed`; `Workpiece center`, the rolling radii,
 `Initial center distance`, `Initial line angle`, `Direction`, `Rolling factor`, `Revolution
 angle`, `Slip angle`, `Feed` to `Rolling`; `Axis` to `Rolling` when the block sets `Type =
-rolling`, otherwise to `Prescribed` (`Type` stays). The contact strategies have subsections of
-their own as well: `Contact/Ratio tolerance` moved to `Contact/Load increment ratio`. Prints what
-it changed; files without such entries are left alone.
+rolling`, otherwise to `Prescribed` (`Type` stays). The contact strategies and step controls have
+subsections of their own as well: `Contact/Ratio tolerance` moved to `Contact/Load increment
+ratio`, `Loading/Target Newton iterations`, `Target status changes` and `Minimum step factor` to
+`Loading/Adaptive`. Prints what it changed; files without such entries are left alone.
 """
 
 import re
@@ -89,9 +90,12 @@ MOTION_MOVED = {
     "Feed": "Rolling",
 }
 
-# the entries of `Contact` that moved into the subsection of their contact strategy
+# the entries of `Contact` and `Loading` that moved into the subsection of their contact strategy
+# or step control
 SECTION_MOVED = {
     "Contact": {"Ratio tolerance": "Load increment ratio"},
+    "Loading": {"Target Newton iterations": "Adaptive", "Target status changes": "Adaptive",
+                "Minimum step factor": "Adaptive"},
 }
 
 SUBSECTION = re.compile(r"^(\s*)subsection\s+(.*?)\s*(#.*)?$")
