@@ -14,6 +14,9 @@
 #include <limits>
 #include <sstream>
 
+#include <sys/resource.h>
+#include <sys/statvfs.h>
+
 namespace ausroll::io
 {
   using namespace dealii;
@@ -346,6 +349,62 @@ namespace ausroll::io
           + "\nResume with the values of the checkpoint, or start a new run "
             "(--overwrite).");
     return warnings;
+  }
+
+  std::string incomplete_cell_data(const std::string &path, const std::uint64_t n_cells)
+  {
+    std::error_code     ec;
+    const std::uint64_t size = fs::file_size(path, ec);
+    if (ec)
+      return "cannot read the checkpoint file '" + path + "' just written: " + ec.message();
+    std::ifstream in(path, std::ios::binary);
+    // the header: cumulative sizes, increasing; the true length k is the one whose total
+    // matches (a truncated file matches none)
+    std::vector<std::uint64_t> header;
+    for (unsigned int k = 1; k <= 64 && in; ++k)
+    {
+      std::uint32_t value = 0;
+      if (!in.read(reinterpret_cast<char *>(&value), sizeof(value)))
+        break;
+      if (!header.empty() && value < header.back())
+        break;
+      header.push_back(value);
+      if (4 * std::uint64_t(k) + n_cells * header.back() == size)
+        return "";
+    }
+    std::uint64_t expected = 0;
+    if (!header.empty())
+      expected = 4 * header.size() + n_cells * header.back();
+    return "the checkpoint file '" + path + "' was written incompletely (" + std::to_string(size)
+           + " bytes"
+           + (expected > size ? ", at least " + std::to_string(expected) + " expected" : "")
+           + "): the disk is full or the file-size limit (ulimit -f) was reached";
+  }
+
+  void require_room(const std::string &directory, std::uintmax_t bytes, std::uintmax_t largest_file)
+  {
+    const auto megabytes = [](const double b)
+    {
+      std::ostringstream text;
+      text << std::setprecision(3) << b / 1048576. << " MB";
+      return text.str();
+    };
+    struct statvfs fs_info;
+    if (statvfs(directory.c_str(), &fs_info) == 0)
+    {
+      const double available = double(fs_info.f_bavail) * double(fs_info.f_frsize);
+      if (available < double(bytes))
+        throw RunFailure("cannot write a checkpoint into '" + directory + "': it needs about "
+                         + megabytes(bytes) + ", the file system has " + megabytes(available)
+                         + " free (the previous checkpoint is kept)");
+    }
+    struct rlimit limit;
+    if (getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY
+        && double(limit.rlim_cur) < double(largest_file))
+      throw RunFailure("cannot write a checkpoint into '" + directory + "': its largest file needs "
+                       + "about " + megabytes(largest_file)
+                       + ", the file-size limit (ulimit -f) is " + megabytes(limit.rlim_cur)
+                       + " (the previous checkpoint is kept)");
   }
 
   CheckpointDirectory::CheckpointDirectory(const std::string &output_directory, const MPI_Comm comm)

@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/solution_transfer.h>
 
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -22,7 +23,38 @@ namespace ausroll::io
   {
     using Vector = TrilinosWrappers::MPI::Vector;
     const CheckpointDirectory checkpoints(output_directory, system.comm);
-    const std::string         dir = checkpoints.begin_write();
+    // Room for it, checked before p4est writes (p4est aborts when it cannot write its file).
+    // The estimate is a lower bound: the material points' and the two vectors' values per cell
+    // (deal.II adds a few bytes per cell, the temperature field more), the mesh file's 12 bytes
+    // per cell.
+    {
+      unsigned int n_q = 0;
+      for (const auto &cell : system.triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          n_q = system.material_points.get_data(cell).size();
+          break;
+        }
+      n_q = Utilities::MPI::max(n_q, system.comm);
+      const std::uintmax_t n_cells = system.triangulation.n_global_active_cells();
+      const std::uintmax_t data
+          = n_cells * sizeof(double)
+            * (n_q * material::MaterialState::n_packed_values + 2 * system.fe.n_dofs_per_cell());
+      std::string error;
+      if (Utilities::MPI::this_mpi_process(system.comm) == 0)
+        try
+        {
+          require_room(output_directory, data + 12 * n_cells, data);
+        }
+        catch (const std::exception &e)
+        {
+          error = "step " + std::to_string(state.step) + ": " + e.what();
+        }
+      error = Utilities::MPI::broadcast(system.comm, error, 0);
+      if (!error.empty())
+        throw RunFailure(error);
+    }
+    const std::string dir = checkpoints.begin_write();
 
     parallel::distributed::SolutionTransfer<dim, Vector> transfer(system.dof_handler);
     // the converged solution before this one too: the predictor of the next step needs it
@@ -62,12 +94,19 @@ namespace ausroll::io
     if (Utilities::MPI::this_mpi_process(system.comm) == 0)
       try
       {
+        const std::string incomplete = incomplete_cell_data(
+            dir + "/mesh_fixed.data", system.triangulation.n_global_active_cells());
+        if (!incomplete.empty())
+          throw RunFailure(incomplete);
         meta.record_files(dir);
         meta.write(dir + "/metadata.txt");
       }
       catch (const std::exception &e)
       {
-        error = e.what();
+        error = "step " + std::to_string(state.step) + ": " + e.what()
+                + " (the previous checkpoint is kept)";
+        std::error_code ec;
+        std::filesystem::remove_all(dir, ec); // give back the space of the incomplete one
       }
     // a checkpoint that could not be completed is not swapped in: the previous one stays
     error = Utilities::MPI::broadcast(system.comm, error, 0);

@@ -42,6 +42,12 @@ where it failed or was cut back before the fixes; about 40 s of CPU in all.
    entry), no cutback, and the force at 30 % within 0.5 % of the shipped scene's (3.; measured
    1700.9 against 1699.7 kN: the side enters contact one detection, at most 1 % of a cell,
    later).
+6. Upsetting with the top face prescribed (u_r = 0, u_z = -0.15 t on boundary 3, no platen: the
+   peer's model), Q2 with 2 x 2 Gauss points and no F-bar, on 8 x 6 and 16 x 12: reaches 30 %
+   with at most 2 cutbacks (measured 0) and no fold warning (F-bar with 3 x 3 points stops at
+   23 % and 19 %), and the force at 30 % within 1 % of 1461.3 kN, the 64 x 48 value (the four
+   meshes 8 x 6 ... 64 x 48 spread by 0.8 % without a monotone trend; doc/scenes/hard_cases.md
+   section 3a).
 
 Usage: check_hard_cases.py AUSROLL SOURCE_DIR
 """
@@ -58,12 +64,14 @@ from checklist import Checklist  # tests/checks/checklist.py (next to this scrip
 SIGMA_Y = 700.0
 PUNCH_EXTRAPOLATED = 4864.0  # N/mm, benchmarks/hard_cases (meshes 2, 3, 4: 4713, 4814, 4847)
 UPSETTING_REFERENCE_30 = 1682.0  # kN, Q2 16x12, 0.25 % steps
+# kN, top face prescribed, Q2 2x2 points, 64 x 48 (8x6 ... 64x48: 1458.6, 1469.8, 1460.3, 1461.3)
+TOP_PRESCRIBED_30 = 1461.3
 
 
-def run(ausroll, source, base, name, overrides):
+def run(ausroll, source, base, name, overrides, base_path=None):
     prm = f"{name}.prm"
     subprocess.run([sys.executable, os.path.join(source, "scripts", "prm_variant.py"),
-                    os.path.join(source, "prm", base), prm, f"Output/Directory = {name}",
+                    base_path or os.path.join(source, "prm", base), prm, f"Output/Directory = {name}",
                     "Output/Write VTU = false", "Output/Verbosity = normal"] + overrides,
                    check=True)
     result = subprocess.run([ausroll, prm, "--overwrite"], capture_output=True, text=True)
@@ -218,6 +226,35 @@ def main():
     check("elastic punch: the curvature term saves at least a quarter of the iterations "
           "(measured 58 against 134) and the median is at most 3",
           runs["true"][1] <= 0.75 * runs["false"][1] and runs["true"][2] <= 3)
+
+    # 6. upsetting with the top face prescribed (u_r = 0, u_z = -0.15 t, no platen): the peer's
+    # model. Q2 with 2 x 2 Gauss points (reduced integration, as the peer's quadratic element)
+    # and no F-bar reaches 30 % on every mesh; F-bar with 3 x 3 points stops at 23 % (8 x 6).
+    for cells in ("8, 6", "16, 12"):
+        name = "top_prescribed_" + cells.replace(", ", "x")
+        with open(f"{name}_bc.prm", "w", encoding="utf-8") as f:
+            f.write(f"include {source}/prm/upsetting.prm\n"
+                    "subsection Boundary conditions\n  set Number of conditions = 3\n"
+                    "  subsection Condition 2\n    set Boundary id = 3\n"
+                    "    set Type = displacement\n    set Components = x, y\n"
+                    "    set Value = 0; -0.15*t\n  end\nend\n"
+                    "subsection Contact\n  set Number of dies = 0\nend\n")
+        result, rows = run(ausroll, source, "", name,
+                           [f"Geometry/Rectangle/Cells = {cells}",
+                            "Model/Quadrature points = 2",
+                            "Model/Volumetric locking treatment = none",
+                            "Postprocess/Reaction boundaries = 3"], base_path=f"{name}_bc.prm")
+        steps, cutbacks, median = summary(rows)
+        force = -1e-3 * float(rows[-1]["reaction_3_y"])
+        folds = "the mesh folds" in result.stdout + result.stderr
+        print(f"top face prescribed, Q2 2x2, {cells}: status {result.returncode}, {steps} steps, "
+              f"{cutbacks} cutbacks, median Newton {median}, F(30 %) = {force:.1f} kN")
+        check(f"top face prescribed {cells}: reaches 30 % with at most 2 cutbacks and no fold",
+              result.returncode == 0 and abs(float(rows[-1]["time"]) - 30) < 1e-9
+              and cutbacks <= 2 and not folds)
+        check(f"top face prescribed {cells}: force at 30 % within 1 % of the finest meshes' "
+              f"{TOP_PRESCRIBED_30} kN (the spread of 8 x 6 ... 64 x 48 is 0.8 %)",
+              abs(force / TOP_PRESCRIBED_30 - 1) <= 0.01)
     return check.exit_status()
 
 

@@ -7,6 +7,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <cstdint>
 #include <map>
 #include <mpi.h>
 #include <string>
@@ -89,6 +90,24 @@ namespace ausroll::io
   std::vector<std::string> compare_resume_parameters(const CheckpointMetadata                 &meta,
                                                      const std::map<std::string, std::string> &now,
                                                      const std::string &directory);
+
+  /**
+   * "" if the cell-data file @p path written by Triangulation::save() for @p n_cells active cells
+   * is complete, otherwise the message naming it. Such a file is a header of k cumulative sizes
+   * (unsigned int; the first one is the cell status, the last one the bytes of a cell) followed
+   * by the bytes of every cell, so its size is 4 k + n_cells * (last size). deal.II writes it
+   * with MPI-IO and ignores the number of bytes written: a full disk or a file-size limit
+   * (`ulimit -f`) leaves a short file and no error. Call on one rank.
+   */
+  std::string incomplete_cell_data(const std::string &path, std::uint64_t n_cells);
+
+  /**
+   * RunFailure naming @p directory if its file system has fewer than @p bytes free, or if the
+   * process's file-size limit (`ulimit -f`) is below @p largest_file bytes. Checked before a
+   * checkpoint is written, because p4est aborts the process when it cannot write its mesh file.
+   */
+  void
+  require_room(const std::string &directory, std::uintmax_t bytes, std::uintmax_t largest_file);
 
   /**
    * The checkpoint directory of an output directory: `<output>/checkpoint/`. A new checkpoint is

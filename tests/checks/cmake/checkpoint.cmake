@@ -44,3 +44,8 @@ set_tests_properties(check/restart_safety PROPERTIES LABELS check TIMEOUT 600)
 # monitor point: each ends with exit 2 and a message naming the file or entry (before: p4est
 # abort, segfault, NaN later, a corrupted history.csv); an undamaged copy resumes. About 15 s.
 ausroll_add_script_check(NAME damaged_restarts SCRIPT ${AUSROLL_CHECKS_DIR}/check_damaged_restarts.py)
+
+# A full disk (imitated by the file-size limit) while writing a checkpoint or a VTU file: exit 3
+# naming the step and file, the previous checkpoint, history.csv and solution.pvd intact, and a
+# resume without the limit gives the uninterrupted history. About 10 s CPU.
+ausroll_add_script_check(NAME full_disk SCRIPT ${AUSROLL_CHECKS_DIR}/check_full_disk.py)
