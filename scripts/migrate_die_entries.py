@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Move the shape entries of `Contact/Die N` into their shape subsections (in place).
+"""Move the entries of old files into the subsections of their shape, law, motion, strategy or step
+control (in place).
 
   scripts/migrate_die_entries.py FILE.prm [FILE.md ...]
 
@@ -23,8 +24,10 @@ takes no factor). The `Profile` subsection of `Revolved profile` and `Extruded p
 motion: `Translation`, `Rotation`, `Pivot` to `Prescribed`; `Workpiece center`, the rolling radii,
 `Initial center distance`, `Initial line angle`, `Direction`, `Rolling factor`, `Revolution
 angle`, `Slip angle`, `Feed` to `Rolling`; `Axis` to `Rolling` when the block sets `Type =
-rolling`, otherwise to `Prescribed` (`Type` stays). Prints what it changed; files without such
-entries are left alone.
+rolling`, otherwise to `Prescribed` (`Type` stays). The contact strategies and step controls have
+subsections of their own as well: `Contact/Ratio tolerance` moved to `Contact/Load increment
+ratio`, `Loading/Target Newton iterations`, `Target status changes` and `Minimum step factor` to
+`Loading/Adaptive`. Prints what it changed; files without such entries are left alone.
 """
 
 import re
@@ -85,6 +88,14 @@ MOTION_MOVED = {
     "Revolution angle": "Rolling",
     "Slip angle": "Rolling",
     "Feed": "Rolling",
+}
+
+# the entries of `Contact` and `Loading` that moved into the subsection of their contact strategy
+# or step control
+SECTION_MOVED = {
+    "Contact": {"Ratio tolerance": "Load increment ratio"},
+    "Loading": {"Target Newton iterations": "Adaptive", "Target status changes": "Adaptive",
+                "Minimum step factor": "Adaptive"},
 }
 
 SUBSECTION = re.compile(r"^(\s*)subsection\s+(.*?)\s*(#.*)?$")
@@ -216,7 +227,12 @@ def migrate(lines, name):
         return "Rolling" if settings.get("Type") == "rolling" else "Prescribed"
 
     out, changed_motions = migrate_blocks(out, name, lambda b: b == "Motion", motion_target)
-    return out, changed + changed_profiles + changed_motions
+    changed_sections = 0
+    for section, moved in SECTION_MOVED.items():
+        out, n = migrate_blocks(out, name, lambda b, section=section: b == section,
+                                lambda entry, settings, block, moved=moved: moved.get(entry))
+        changed_sections += n
+    return out, changed + changed_profiles + changed_motions + changed_sections
 
 
 def main():

@@ -79,7 +79,7 @@ CASES = {
     "events": ("hard_punch.prm", "die_punch_force_y", 1.0, [
         ("refinements 2", ["Geometry/Local refinements = 2"]),
         ("refinements 2, target 4", ["Geometry/Local refinements = 2",
-                                     "Loading/Target Newton iterations = 4"]),
+                                     "Loading/Adaptive/Target Newton iterations = 4"]),
         ("refinements 3", ["Geometry/Local refinements = 3"])]),
     "events_indentation": ("indentation.prm", "die_punch_force_y", 1.0, [
         ("as shipped", [])]),

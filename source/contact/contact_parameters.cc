@@ -1,4 +1,5 @@
 #include <ausroll/contact/contact_parameters.h>
+#include <ausroll/contact/contact_strategy.h>
 #include <ausroll/contact/die_motion.h>
 #include <ausroll/contact/friction_law.h>
 #include <ausroll/core/exceptions.h>
@@ -20,28 +21,19 @@ namespace ausroll::contact
                       "0",
                       Patterns::Integer(0, max_dies),
                       "Rigid dies used (subsections Die 0, Die 1, ...).");
-    prm.declare_entry(
-        "Strategy",
-        "active set",
-        Patterns::Selection("active set|nested active set|load increment ratio"),
-        "active set: contact statuses are updated inside the Newton loop (semi-smooth "
-        "Newton); nested active set: penetrating nodes close at once, the other changes "
-        "(opening, stick/slip) are decided at converged states and Newton continues until none "
-        "changes (robust when many nodes change status per step, as in rolling with friction); "
-        "load increment "
-        "ratio: statuses are fixed during a sub-step and each step is scaled to the next status "
-        "change (NOFEAP, Okamoto).");
+    prm.declare_entry("Strategy",
+                      "active set",
+                      Patterns::Selection(StrategyRegistry::instance().selection()),
+                      "How contact statuses are found (a strategy's entries are in the subsection "
+                      "of its name): "
+                          + StrategyRegistry::instance().descriptions() + ".");
+    StrategyRegistry::instance().declare_subsections(prm);
     prm.declare_entry(
         "Maximum status changes",
         "6",
         Patterns::Integer(1, 100),
         "A node may change its contact status at most this often within one load step "
         "(guards the active set against chattering).");
-    prm.declare_entry(
-        "Ratio tolerance",
-        "1e-3",
-        Patterns::Double(0., 0.5),
-        "Load increment ratio: a step whose ratio alpha is above 1 - tolerance is accepted.");
     prm.declare_entry(
         "Curvature tangent",
         "false",
@@ -125,6 +117,7 @@ namespace ausroll::contact
                                        + "Coulomb capped by shear/Friction factor` or `" + die
                                        + "Levanov/Friction factor`";
     }
+    moved["Contact/Ratio tolerance"] = "`Contact/Load increment ratio/Ratio tolerance`";
     return moved;
   }
 
@@ -133,14 +126,10 @@ namespace ausroll::contact
   {
     prm.enter_subsection("Contact");
     const unsigned int n_dies = prm.get_integer("Number of dies");
-    {
-      const std::string name = prm.get("Strategy");
-      strategy = name == "active set"          ? ContactStrategy::active_set
-                 : name == "nested active set" ? ContactStrategy::nested_active_set
-                                               : ContactStrategy::load_increment_ratio;
-    }
+    strategy = prm.get("Strategy");
+    strategy_parameters = StrategyRegistry::instance().parse(
+        strategy, prm, "Contact/", input_directory, "Strategy");
     max_status_changes = prm.get_integer("Maximum status changes");
-    ratio_tolerance = prm.get_double("Ratio tolerance");
     curvature_tangent = prm.get_bool("Curvature tangent");
     add_penetrating_boundaries = prm.get("Penetrating boundaries") == "add";
     dies.clear();

@@ -51,27 +51,6 @@ namespace ausroll::contact
     motion = create_motion<dim>(*p.motion, p.motion_path);
   }
 
-  Projection DieProfile::project(const Point<2> &x, const double max_distance) const
-  {
-    if (const auto *chain = dynamic_cast<const ChainSurface *>(surface))
-      return chain->chain().project(x, max_distance);
-    const SurfaceProjection<2> q = surface->project(x, max_distance);
-    Projection                 p;
-    if (!q.valid)
-      return p;
-    p.valid = true;
-    p.point = q.point;
-    p.gap = q.gap;
-    p.distance = q.distance;
-    p.normal = q.normal;
-    p.tangent = q.tangents[0];
-    p.curvature = q.curvatures[0];
-    p.s = q.coordinates[0];
-    p.at_corner = q.at_edge;
-    p.at_end = q.at_end;
-    return p;
-  }
-
   template <int dim>
   DieProjection<dim> RigidDie<dim>::project(const Point<dim> &x, const double t) const
   {

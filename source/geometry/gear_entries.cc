@@ -22,6 +22,16 @@ namespace ausroll::geometry
         "Dedendum", "-1", Patterns::Double(), "Dedendum (mm); negative: 1.25 module.");
   }
 
+  void GearSize::parse(const ParameterHandler &prm)
+  {
+    teeth = prm.get_integer("Number of teeth");
+    diametral_pitch = prm.get_double("Diametral pitch");
+    module = prm.get_double("Module");
+    pressure_angle = prm.get_double("Pressure angle");
+    addendum = prm.get_double("Addendum");
+    dedendum = prm.get_double("Dedendum");
+  }
+
   ToothProportions tooth_proportions(const double addendum,
                                      const double dedendum,
                                      const double pitch_tooth_thickness,

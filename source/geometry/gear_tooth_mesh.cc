@@ -191,12 +191,7 @@ namespace ausroll::geometry
   void GearToothParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Gear tooth");
-    n_teeth = prm.get_integer("Number of teeth");
-    diametral_pitch = prm.get_double("Diametral pitch");
-    module = prm.get_double("Module");
-    pressure_angle = prm.get_double("Pressure angle");
-    addendum = prm.get_double("Addendum");
-    dedendum = prm.get_double("Dedendum");
+    size.parse(prm);
     tooth_thickness = prm.get_double("Tooth thickness");
     root_fillet_radius = prm.get_double("Root fillet radius");
     rim_thickness = prm.get_double("Rim thickness");
@@ -208,27 +203,30 @@ namespace ausroll::geometry
 
   InvoluteGear GearToothParameters::gear() const
   {
-    require(
-        diametral_pitch > 0. || module > 0., section + "Module", "set Diametral pitch or Module");
-    require(pressure_angle > 0., section + "Pressure angle", "must be positive");
+    require(size.diametral_pitch > 0. || size.module > 0.,
+            section + "Module",
+            "set Diametral pitch or Module");
+    require(size.pressure_angle > 0., section + "Pressure angle", "must be positive");
     require(teeth < max_sector_teeth(),
             section + "Teeth",
             std::to_string(teeth) + " is outside the allowed range 1 to "
                 + std::to_string(max_sector_teeth() - 1)
-                + ": the mesh is a sector of the gear (Number of teeth = " + std::to_string(n_teeth)
+                + ": the mesh is a sector of the gear (Number of teeth = "
+                + std::to_string(size.teeth)
                 + ") with cut edges as boundaries 2 and 3, at most half the gear");
     ToothProportions p;
-    if (addendum >= 0.)
-      p.addendum = addendum;
-    if (dedendum >= 0.)
-      p.dedendum = dedendum;
+    if (size.addendum >= 0.)
+      p.addendum = size.addendum;
+    if (size.dedendum >= 0.)
+      p.dedendum = size.dedendum;
     if (tooth_thickness >= 0.)
       p.pitch_tooth_thickness = tooth_thickness;
     p.root_fillet_radius = root_fillet_radius;
     try
     {
-      const double alpha = pressure_angle * M_PI / 180.;
-      return InvoluteGear::from_pitch_or_module(n_teeth, diametral_pitch, module, alpha, p);
+      const double alpha = size.pressure_angle * M_PI / 180.;
+      return InvoluteGear::from_pitch_or_module(
+          size.teeth, size.diametral_pitch, size.module, alpha, p);
     }
     catch (const EntryError &e)
     {
@@ -253,7 +251,7 @@ namespace ausroll::geometry
   double GearToothParameters::axis_angle(const unsigned int k) const
   {
     return tooth_axis_angle * M_PI / 180.
-           + (static_cast<double>(k) - 0.5 * (teeth - 1.)) * 2. * M_PI / n_teeth;
+           + (static_cast<double>(k) - 0.5 * (teeth - 1.)) * 2. * M_PI / size.teeth;
   }
 
   void create_gear_tooth_mesh(const GearToothParameters &p, Triangulation<2> &coarse)

@@ -2,7 +2,9 @@
 #include <ausroll/core/parameter_file.h>
 #include <ausroll/scene/scene_parameters.h>
 
+#include <map>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace ausroll::scene
@@ -63,7 +65,9 @@ namespace ausroll::scene
     const ParameterText text = expand_parameter_file(filename);
     ParameterHandler    prm;
     SceneParameters::declare_parameters(prm);
-    parse_parameter_text(prm, text, overrides, contact::ContactParameters::moved_entries());
+    std::map<std::string, std::string> moved = contact::ContactParameters::moved_entries();
+    moved.merge(solver::LoadingParameters::moved_entries());
+    parse_parameter_text(prm, text, overrides, moved);
     const std::map<std::string, std::string> entries = flatten_parameters(prm);
     check_number_magnitudes(entries);
 

@@ -32,6 +32,7 @@ namespace ausroll::solver
       , output_directory(output_directory)
       , log(log)
       , detail_log(detail_log)
+      , step_control(create_step_control(loading))
   {
   }
 
@@ -170,22 +171,15 @@ namespace ausroll::solver
                                      const LoadStep    &step,
                                      const unsigned int status_changes) const
   {
-    const double nominal_dt = current_nominal_step();
-    if (loading.step_control == StepControl::adaptive)
-    {
-      // From the step actually taken after a cutback, else from the size asked for (a step
-      // shortened to end on the nominal grid says nothing about the size that works).
-      double factor = loading.step_factor(step.result.iterations, status_changes);
-      if (step.cutbacks > 0)
-        factor = std::min(factor, 1.);
-      const double next = std::clamp(
-          (step.cutbacks > 0 ? dt_taken : dt) * factor, minimum_step_size(), nominal_dt);
-      detail_log << "  step control: " << step.result.iterations << " Newton iterations, "
-                 << status_changes << " contact status changes, " << step.cutbacks
-                 << " cutbacks: next dt = " << next << std::endl;
-      return next;
-    }
-    return step.cutbacks > 0 ? dt_taken : std::min(nominal_dt, dt * loading.step_growth_factor);
+    StepOutcome outcome;
+    outcome.dt = dt;
+    outcome.dt_taken = dt_taken;
+    outcome.newton_iterations = step.result.iterations;
+    outcome.cutbacks = step.cutbacks;
+    outcome.status_changes = status_changes;
+    outcome.nominal_dt = current_nominal_step();
+    outcome.minimum_dt = minimum_step_size();
+    return step_control->next_step_size(outcome, detail_log);
   }
 
   void LoadStepper::run(SteppedProblem &problem, double t_done, double dt, unsigned int steps_done)

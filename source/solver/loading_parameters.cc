@@ -1,7 +1,6 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/solver/loading_parameters.h>
-
-#include <algorithm>
+#include <ausroll/solver/step_control.h>
 
 namespace ausroll::solver
 {
@@ -33,33 +32,15 @@ namespace ausroll::solver
         "extrapolation of the last step's displacement increment, scaled to the step size. "
         "Extrapolation saves many iterations in large rotations of slender bodies, where the "
         "first iterate from the converged state carries large spurious membrane forces.");
-    prm.declare_entry(
-        "Step control",
-        "halving",
-        Patterns::Selection("halving|adaptive"),
-        "halving: a failing step is halved (Maximum cutbacks), every later step grows by Step "
-        "growth factor up to the nominal size. adaptive: in addition, the size of the next step "
-        "follows the last converged step: it shrinks by Target Newton iterations / iterations "
-        "(or Target status changes / contact status changes) when the step needed more, grows "
-        "by Step growth factor only after an easy step (at most half of both targets) and stays "
-        "otherwise; after a cutback it does not grow. Steps never exceed the nominal size and "
-        "still end on the nominal grid (doc/scenes/hard_cases.md).");
-    prm.declare_entry("Target Newton iterations",
-                      "4",
-                      Patterns::Integer(1, 100),
-                      "Step control = adaptive: Newton iterations per step aimed at. Steps grow "
-                      "after at most half of it and keep their size up to it, so they settle at "
-                      "half the target plus one (4: 3 iterations per step).");
-    prm.declare_entry("Target status changes",
-                      "4",
-                      Patterns::Integer(0, 100000),
-                      "Step control = adaptive: contact status changes (nodes closing, opening, "
-                      "switching stick/slip) per step aimed at; 0: not used.");
-    prm.declare_entry("Minimum step factor",
-                      "0.25",
-                      Patterns::Double(0.01, 1.),
-                      "Step control = adaptive: the next step is at least this fraction of the "
-                      "last one.");
+    prm.declare_entry("Step control",
+                      "halving",
+                      Patterns::Selection(StepControlRegistry::instance().selection()),
+                      "How the size of the next step is chosen (a rule's entries are in the "
+                      "subsection of its name): "
+                          + StepControlRegistry::instance().descriptions()
+                          + ". Steps never exceed the nominal size and still end on the nominal "
+                            "grid (doc/scenes/hard_cases.md).");
+    StepControlRegistry::instance().declare_subsections(prm);
     prm.declare_entry(
         "Minimum step fraction",
         "1e-4",
@@ -88,20 +69,13 @@ namespace ausroll::solver
     prm.leave_subsection();
   }
 
-  double LoadingParameters::step_factor(const unsigned int newton_iterations,
-                                        const unsigned int status_changes) const
+  std::map<std::string, std::string> LoadingParameters::moved_entries()
   {
-    double factor = 1.;
-    if (newton_iterations > target_newton_iterations)
-      factor = double(target_newton_iterations) / newton_iterations;
-    if (target_status_changes > 0 && status_changes > target_status_changes)
-      factor = std::min(factor, double(target_status_changes) / status_changes);
-    if (factor < 1.)
-      return std::max(factor, minimum_step_factor);
-    const bool easy_iterations = 2 * newton_iterations <= target_newton_iterations;
-    const bool easy_contact
-        = target_status_changes == 0 || 2 * status_changes <= target_status_changes;
-    return easy_iterations && easy_contact ? step_growth_factor : 1.;
+    std::map<std::string, std::string> moved;
+    for (const char *entry :
+         {"Target Newton iterations", "Target status changes", "Minimum step factor"})
+      moved["Loading/" + std::string(entry)] = "`Loading/Adaptive/" + std::string(entry) + "`";
+    return moved;
   }
 
   void LoadingParameters::parse_parameters(ParameterHandler &prm)
@@ -112,11 +86,9 @@ namespace ausroll::solver
     max_cutbacks = prm.get_integer("Maximum cutbacks");
     step_growth_factor = prm.get_double("Step growth factor");
     predictor = prm.get("Predictor") == "none" ? Predictor::none : Predictor::linear_extrapolation;
-    step_control
-        = prm.get("Step control") == "adaptive" ? StepControl::adaptive : StepControl::halving;
-    target_newton_iterations = prm.get_integer("Target Newton iterations");
-    target_status_changes = prm.get_integer("Target status changes");
-    minimum_step_factor = prm.get_double("Minimum step factor");
+    step_control = prm.get("Step control");
+    step_control_parameters
+        = StepControlRegistry::instance().parse(step_control, prm, "Loading/", "", "Step control");
     minimum_step_fraction = prm.get_double("Minimum step fraction");
     volume_change_limit = prm.get_double("Volume change limit");
     stop_at_distortion = prm.get_bool("Stop at distorted mesh");

@@ -16,9 +16,11 @@
  * sticks, events interpolated linearly from the committed state.
  */
 #include <ausroll/contact/contact_strategy.h>
+#include <ausroll/contact/strategies/load_increment_ratio.h>
 #include <ausroll/solver/newton_solver.h>
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/parameter_handler.h>
 
 #include <gtest/gtest.h>
 
@@ -275,15 +277,14 @@ namespace
   class StopScene : public solver::NonlinearProblem
   {
   public:
-    StopScene(const StopProblem &problem, const contact::ContactStrategy strategy)
+    StopScene(const StopProblem &problem, const std::string &strategy)
         : node(problem)
         , u(dealii::complete_index_set(2), MPI_COMM_SELF)
         , u_committed(u)
         , start(u)
     {
       contact::ContactParameters parameters;
-      parameters.strategy = strategy;
-      parameters.ratio_tolerance = 1e-3;
+      parameters.strategy = strategy; // the registered defaults (Ratio tolerance 1e-3)
       status_strategy = contact::make_status_strategy(parameters, node, true);
     }
 
@@ -470,7 +471,7 @@ namespace
 // opens at the first assembly of step 3 by its tensile reaction (a re-assembly, no outer pass).
 TEST(ContactStrategy, ActiveSetPressAndRelease)
 {
-  StopScene                 scene(press_and_release(), contact::ContactStrategy::active_set);
+  StopScene                 scene(press_and_release(), "active set");
   const std::vector<Record> records = scene.run();
   expect_states(records, press_and_release_states);
   expect_outer_passes(records, std::vector<unsigned int>(records.size(), 0));
@@ -479,7 +480,7 @@ TEST(ContactStrategy, ActiveSetPressAndRelease)
 // Active set with friction: open, stick, slip (switched at the first assembly of step 3), slip.
 TEST(ContactStrategy, ActiveSetPressAndSlide)
 {
-  StopScene                 scene(press_and_slide(), contact::ContactStrategy::active_set);
+  StopScene                 scene(press_and_slide(), "active set");
   const std::vector<Record> records = scene.run();
   expect_states(records, press_and_slide_states);
   expect_outer_passes(records, std::vector<unsigned int>(records.size(), 0));
@@ -490,7 +491,7 @@ TEST(ContactStrategy, ActiveSetPressAndSlide)
 // in step 3, none elsewhere.
 TEST(ContactStrategy, NestedActiveSetPressAndRelease)
 {
-  StopScene                 scene(press_and_release(), contact::ContactStrategy::nested_active_set);
+  StopScene                 scene(press_and_release(), "nested active set");
   const std::vector<Record> records = scene.run();
   expect_states(records, press_and_release_states);
   expect_outer_passes(records, {0, 0, 1, 0});
@@ -500,7 +501,7 @@ TEST(ContactStrategy, NestedActiveSetPressAndRelease)
 // step 3 (one outer pass).
 TEST(ContactStrategy, NestedActiveSetPressAndSlide)
 {
-  StopScene                 scene(press_and_slide(), contact::ContactStrategy::nested_active_set);
+  StopScene                 scene(press_and_slide(), "nested active set");
   const std::vector<Record> records = scene.run();
   expect_states(records, press_and_slide_states);
   expect_outer_passes(records, {0, 0, 1, 0});
@@ -512,7 +513,7 @@ static void expect_ratio_states(const StopProblem             &problem,
                                 const std::vector<Expected>   &nominal,
                                 const std::array<Expected, 2> &events)
 {
-  StopScene                 scene(problem, contact::ContactStrategy::load_increment_ratio);
+  StopScene                 scene(problem, "load increment ratio");
   const std::vector<Record> records = scene.run();
   std::vector<Expected>     expected = nominal;
   expected.insert(expected.begin() + 1, events[0]);
@@ -560,4 +561,30 @@ TEST(ContactStrategy, FixedStatusesNeverChange)
   EXPECT_FALSE(strategy->backtrack_with_small_constraint_gaps());
   dealii::ConditionalOStream quiet(std::cout, false);
   EXPECT_TRUE(strategy->end_of_step(0.25, 1., quiet).accept);
+}
+
+// The strategies are registered (contact/strategies/, one file each): the `Strategy` selection
+// lists them in name order, `Load increment ratio/Ratio tolerance` reaches the strategy's
+// parameters, and the old `Contact/Ratio tolerance` names its new place.
+TEST(ContactStrategy, RegisteredWithTheirSubsections)
+{
+  EXPECT_EQ(contact::StrategyRegistry::instance().names(),
+            (std::vector<std::string>{"active set", "load increment ratio", "nested active set"}));
+  dealii::ParameterHandler prm;
+  contact::ContactParameters::declare_parameters(prm);
+  prm.parse_input_from_string("subsection Contact\n"
+                              "  set Strategy = load increment ratio\n"
+                              "  subsection Load increment ratio\n"
+                              "    set Ratio tolerance = 0.01\n"
+                              "  end\n"
+                              "end\n");
+  contact::ContactParameters parameters;
+  parameters.parse_parameters(prm, "");
+  EXPECT_EQ(parameters.strategy, "load increment ratio");
+  const auto *ratio = dynamic_cast<const contact::LoadIncrementRatioParameters *>(
+      parameters.strategy_parameters.get());
+  ASSERT_NE(ratio, nullptr);
+  EXPECT_EQ(ratio->tolerance, 0.01);
+  EXPECT_EQ(contact::ContactParameters::moved_entries().at("Contact/Ratio tolerance"),
+            "`Contact/Load increment ratio/Ratio tolerance`");
 }

@@ -9,8 +9,12 @@
  * the tolerance is round-off (1e-12).
  */
 #include <ausroll/contact/contact_parameters.h>
-#include <ausroll/contact/die_surface.h>
 #include <ausroll/contact/rigid_die.h>
+#include <ausroll/contact/surfaces/arc_line.h>
+#include <ausroll/contact/surfaces/circle.h>
+#include <ausroll/contact/surfaces/flat.h>
+#include <ausroll/contact/surfaces/polyline.h>
+#include <ausroll/geometry/curve_chain.h>
 
 #include "contact_test_utilities.h"
 
@@ -105,20 +109,24 @@ TEST(DieEndPenetration, InfiniteAndClosedDiesUnchanged2d)
 // ends at its end points (a clamped projection has margin 0 whatever the gap's sign).
 TEST(DieEndPenetration, OutlineMarginOfChains)
 {
-  using contact::DieSurface;
+  using contact::surfaces::arc_line_chain;
+  using contact::surfaces::circle_chain;
+  using contact::surfaces::flat_chain;
+  using contact::surfaces::polyline_chain;
+  using geometry::CurveChain;
   const std::vector<Point<2>> points{Point<2>(0., 0.), Point<2>(10., 0.), Point<2>(10., 10.)};
 
-  const DieSurface extended = DieSurface::polyline(points, false, true);
+  const CurveChain extended = polyline_chain(points, false, true);
   EXPECT_NEAR(extended.project(Point<2>(5., -1.)).end_margin, 5., tol);
   EXPECT_NEAR(extended.project(Point<2>(-3., -1.)).end_margin, -3., tol);
   EXPECT_NEAR(extended.project(Point<2>(10.5, 12.)).end_margin, -2., tol);
   EXPECT_NEAR(extended.project(Point<2>(10.5, 9.)).end_margin, 1., tol);
   // backwards: the same outline, the same margins
-  const DieSurface back = extended.reversed();
+  const CurveChain back = extended.reversed();
   EXPECT_NEAR(back.project(Point<2>(-3., 1.)).end_margin, -3., tol);
   EXPECT_NEAR(back.project(Point<2>(9.5, 9.)).end_margin, 1., tol);
 
-  const DieSurface open = DieSurface::polyline(points);
+  const CurveChain open = polyline_chain(points);
   const auto       beyond = open.project(Point<2>(11., 12.)); // past the end, material side
   EXPECT_TRUE(beyond.at_end);
   EXPECT_LT(beyond.gap, 0.);
@@ -126,17 +134,16 @@ TEST(DieEndPenetration, OutlineMarginOfChains)
   EXPECT_NEAR(open.project(Point<2>(10.5, 9.)).end_margin, 1., tol);
 
   // fillet 2 at (10, 0): outline length 8 + pi + 8; (10.5, 9) lies 1 before its end
-  const DieSurface arc_line = DieSurface::arc_line_composite(points, {2.}, false, true);
+  const CurveChain arc_line = arc_line_chain(points, {2.}, false, true);
   EXPECT_NEAR(arc_line.project(Point<2>(10.5, 9.)).end_margin, 1., tol);
   EXPECT_NEAR(arc_line.project(Point<2>(10.5, 13.)).end_margin, -3., tol);
   EXPECT_NEAR(arc_line.project(Point<2>(-1., -1.)).end_margin, -1., tol);
   EXPECT_NEAR(arc_line.project(Point<2>(4., -1.)).end_margin, 4., tol);
 
-  EXPECT_EQ(DieSurface::flat(Point<2>(0., 0.), Tensor<1, 2>({1., 0.}))
-                .project(Point<2>(1e6, -1.))
-                .end_margin,
-            std::numeric_limits<double>::infinity());
-  EXPECT_EQ(DieSurface::circle(Point<2>(0., 0.), 5.).project(Point<2>(1., 0.)).end_margin,
+  EXPECT_EQ(
+      flat_chain(Point<2>(0., 0.), Tensor<1, 2>({1., 0.})).project(Point<2>(1e6, -1.)).end_margin,
+      std::numeric_limits<double>::infinity());
+  EXPECT_EQ(circle_chain(Point<2>(0., 0.), 5.).project(Point<2>(1., 0.)).end_margin,
             std::numeric_limits<double>::infinity());
 }
 

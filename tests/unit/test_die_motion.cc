@@ -5,11 +5,12 @@
  * slip speed, feed).
  */
 #include <ausroll/contact/die_motion.h>
-#include <ausroll/contact/die_surface.h>
 #include <ausroll/contact/motion/fixed.h>
 #include <ausroll/contact/motion/prescribed.h>
 #include <ausroll/contact/motion/rolling.h>
+#include <ausroll/contact/surfaces/circle.h>
 #include <ausroll/core/exceptions.h>
+#include <ausroll/geometry/curve_chain.h>
 
 #include <gtest/gtest.h>
 
@@ -20,7 +21,8 @@
 
 using DieMotion = ausroll::contact::DieMotion<2>;
 using DiePose = ausroll::contact::DiePose<2>;
-using ausroll::contact::DieSurface;
+using ausroll::contact::surfaces::circle_chain;
+using ausroll::geometry::CurveChain;
 using FixedPose = ausroll::contact::FixedPose<2>;
 using PrescribedMotion = ausroll::contact::PrescribedMotion<2>;
 using RollingMotion = ausroll::contact::RollingMotion<2>;
@@ -112,7 +114,7 @@ TEST(DieMotion, PrescribedTranslationAndRotation)
   // (0, 12) and moves down with speed 0.5.
   const PrescribedMotion press(
       [](const double t) { return vec(0.0, -0.5 * t); }, {}, Point<2>(), Point<2>(0.0, 12.0));
-  const DieSurface roll = DieSurface::circle(Point<2>(), 10.0);
+  const CurveChain roll = circle_chain(Point<2>(), 10.0);
   // Gap of the global point (0, 1) at t = 4: centre at (0, 10), gap = 9 - 10 = -1.
   EXPECT_NEAR(roll.project(press.pose(4.0).to_local(Point<2>(0.0, 1.0))).gap, -1.0, 1e-13);
   const Tensor<1, 2> vp = PrescribedMotion::constant_velocity(vec(2.0, -1.0)).velocity(3.0, X);
@@ -132,7 +134,7 @@ TEST(RollingMotion, PureRollingHasNoSlipAtThePitchPoint)
     d.direction = direction;
     d.revolution_angle = [](const double t) { return 0.3 * t + 0.05 * t * t; };
     const RollingMotion motion(d);
-    const DieSurface    die = DieSurface::circle(Point<2>(), R_D);
+    const CurveChain    die = circle_chain(Point<2>(), R_D);
 
     for (const double t : {0.0, 0.7, 2.5})
     {
@@ -191,7 +193,7 @@ TEST(RollingMotion, SlipAndFeed)
   const double     t = 1.5;
   const Point<2>   xc = motion.pitch_point(t);
   const Point<2>   X = motion.pose(t).to_local(xc);
-  const DieSurface die = DieSurface::circle(Point<2>(), R_D);
+  const CurveChain die = circle_chain(Point<2>(), R_D);
   // Feed 0.15 moves the die into the workpiece pitch circle: penetration 0.15.
   EXPECT_NEAR(die.project(X).gap, -0.15, 1e-11);
   // Velocity of the die material point at the pitch point: rigid-body formula

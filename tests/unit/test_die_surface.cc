@@ -1,11 +1,16 @@
 /**
  * @file test_die_surface.cc
- * Unit tests of contact::DieSurface: projections (gap, normal, tangent, s) on flats, circles,
- * polyline corners (convex and concave), line-arc composites, involute flanks and gear dies;
- * point_at / arc-length round trips; points files; the search band.
+ * Unit tests of geometry::CurveChain and the chains of the 2D die shapes: projections (gap, normal,
+ * tangent, s) on flats, circles, polyline corners (convex and concave), line-arc composites,
+ * involute flanks and gear dies; point_at / arc-length round trips; points files; the search band.
  */
-#include <ausroll/contact/die_surface.h>
+#include <ausroll/contact/surfaces/arc_line.h>
+#include <ausroll/contact/surfaces/circle.h>
+#include <ausroll/contact/surfaces/flat.h>
+#include <ausroll/contact/surfaces/involute_gear.h>
+#include <ausroll/contact/surfaces/polyline.h>
 #include <ausroll/core/exceptions.h>
+#include <ausroll/geometry/curve_chain.h>
 #include <ausroll/geometry/involute_gear.h>
 
 #include <gtest/gtest.h>
@@ -18,9 +23,17 @@
 
 #include <unistd.h>
 
-using ausroll::contact::DieSegment;
-using ausroll::contact::DieSurface;
-using ausroll::contact::Projection;
+using ausroll::contact::surfaces::arc_line_chain;
+using ausroll::contact::surfaces::circle_chain;
+using ausroll::contact::surfaces::flat_chain;
+using ausroll::contact::surfaces::involute_flank_chain;
+using ausroll::contact::surfaces::involute_gear_chain;
+using ausroll::contact::surfaces::polyline_chain;
+using ausroll::contact::surfaces::polyline_chain_from_file;
+using ausroll::contact::surfaces::read_points_file;
+using ausroll::geometry::CurveChain;
+using ausroll::geometry::CurveSegment;
+using Projection = ausroll::geometry::SurfaceProjection<2>;
 using dealii::Point;
 using dealii::Tensor;
 
@@ -49,10 +62,10 @@ namespace
     EXPECT_NEAR(p.distance, std::abs(gap), tol);
     EXPECT_NEAR(p.normal[0], normal[0], tol);
     EXPECT_NEAR(p.normal[1], normal[1], tol);
-    EXPECT_NEAR(p.s, s, tol);
+    EXPECT_NEAR(p.coordinates[0], s, tol);
     // Tangent = normal rotated by -90 degrees.
-    EXPECT_NEAR(p.tangent[0], normal[1], tol);
-    EXPECT_NEAR(p.tangent[1], -normal[0], tol);
+    EXPECT_NEAR(p.tangents[0][0], normal[1], tol);
+    EXPECT_NEAR(p.tangents[0][1], -normal[0], tol);
   }
 
   /** x = x_proj + g n must hold for every projection. */
@@ -75,12 +88,12 @@ namespace
 
   /** Dense sampling of a die: brute-force reference for distances. */
   double
-  brute_force_distance(const DieSurface &die, const Point<2> &x, const unsigned int n_per_segment)
+  brute_force_distance(const CurveChain &die, const Point<2> &x, const unsigned int n_per_segment)
   {
     double best = std::numeric_limits<double>::infinity();
     for (unsigned int i = 0; i < die.n_segments(); ++i)
     {
-      const DieSegment &seg = die.segment(i);
+      const CurveSegment &seg = die.segment(i);
       for (unsigned int j = 0; j <= n_per_segment; ++j)
         best = std::min(best,
                         x.distance(seg.point(seg.u_begin() + seg.length() * j / n_per_segment)));
@@ -89,23 +102,23 @@ namespace
   }
 } // namespace
 
-TEST(DieSurface, InfiniteFlat)
+TEST(CurveChain, InfiniteFlat)
 {
-  const DieSurface die = DieSurface::flat(Point<2>(0.0, 1.0), vec(2.0, 0.0));
+  const CurveChain die = flat_chain(Point<2>(0.0, 1.0), vec(2.0, 0.0));
   EXPECT_TRUE(std::isinf(die.total_length()));
   // Workpiece on the left of the direction: n = +y.
   expect_projection(die.project(Point<2>(3.0, 3.0)), Point<2>(3.0, 1.0), 2.0, vec(0, 1), 3.0);
   expect_projection(die.project(Point<2>(-1.0, 0.5)), Point<2>(-1.0, 1.0), -0.5, vec(0, 1), -1.0);
   EXPECT_FALSE(die.project(Point<2>(-1.0, 0.5)).at_end);
-  EXPECT_EQ(die.project(Point<2>(1e6, 2.0)).curvature, 0.0);
+  EXPECT_EQ(die.project(Point<2>(1e6, 2.0)).curvatures[0], 0.0);
   // Upper die: direction -x, normal -y.
-  const DieSurface upper = DieSurface::flat(Point<2>(0.0, 5.0), vec(-1.0, 0.0));
+  const CurveChain upper = flat_chain(Point<2>(0.0, 5.0), vec(-1.0, 0.0));
   expect_projection(upper.project(Point<2>(2.0, 4.0)), Point<2>(2.0, 5.0), 1.0, vec(0, -1), -2.0);
 }
 
-TEST(DieSurface, FiniteFlatEnds)
+TEST(CurveChain, FiniteFlatEnds)
 {
-  const DieSurface die = DieSurface::flat(Point<2>(1.0, 1.0), vec(1.0, 0.0), 2.0);
+  const CurveChain die = flat_chain(Point<2>(1.0, 1.0), vec(1.0, 0.0), 2.0);
   EXPECT_NEAR(die.total_length(), 4.0, 1e-15);
   expect_projection(die.project(Point<2>(0.0, 0.0)), Point<2>(0.0, 1.0), -1.0, vec(0, 1), 1.0);
   // Beyond the end, outside: wraps around the end point.
@@ -119,45 +132,45 @@ TEST(DieSurface, FiniteFlatEnds)
   expect_consistent(Point<2>(4.0, 0.5), q);
 }
 
-TEST(DieSurface, CircleDieRoll)
+TEST(CurveChain, CircleDieRoll)
 {
   const Point<2>   c(1.0, 2.0);
-  const DieSurface roll = DieSurface::circle(c, 3.0);
+  const CurveChain roll = circle_chain(c, 3.0);
   EXPECT_NEAR(roll.total_length(), 6.0 * M_PI, 1e-14);
   // Outside on +x: s = 0; normal outward, tangent clockwise.
   const Projection a = roll.project(Point<2>(6.0, 2.0));
   expect_projection(a, Point<2>(4.0, 2.0), 2.0, vec(1, 0), 0.0);
-  EXPECT_NEAR(a.curvature, 1.0 / 3.0, 1e-15);
+  EXPECT_NEAR(a.curvatures[0], 1.0 / 3.0, 1e-15);
   // Inside, above the centre: clockwise from angle 0 to pi/2 is 3/4 of the circle.
   expect_projection(
       roll.project(Point<2>(1.0, 3.0)), Point<2>(1.0, 5.0), -2.0, vec(0, 1), 4.5 * M_PI);
   // Far away.
   const Projection f = roll.project(Point<2>(1.0, -1e4));
   expect_projection(f, Point<2>(1.0, -1.0), 1e4 - 1.0, vec(0, -1), 1.5 * M_PI, 1e-9);
-  EXPECT_FALSE(f.at_corner || f.at_end);
+  EXPECT_FALSE(f.at_edge || f.at_end);
 }
 
-TEST(DieSurface, CircleHoleConcave)
+TEST(CurveChain, CircleHoleConcave)
 {
-  const DieSurface hole = DieSurface::circle(Point<2>(0.0, 0.0), 3.0, false);
+  const CurveChain hole = circle_chain(Point<2>(0.0, 0.0), 3.0, false);
   // Inside the hole (the open space): normal towards the centre, positive gap.
   const Projection a = hole.project(Point<2>(1.0, 0.0));
   expect_projection(a, Point<2>(3.0, 0.0), 2.0, vec(-1, 0), 0.0);
-  EXPECT_NEAR(a.curvature, -1.0 / 3.0, 1e-15);
+  EXPECT_NEAR(a.curvatures[0], -1.0 / 3.0, 1e-15);
   // Outside the circle = in the material.
   expect_projection(
       hole.project(Point<2>(0.0, 5.0)), Point<2>(0.0, 3.0), -2.0, vec(0, -1), 1.5 * M_PI);
 }
 
-TEST(DieSurface, PolylineConvexCorner)
+TEST(CurveChain, PolylineConvexCorner)
 {
   // Top and right side of a block (material below-left): right turn at (2, 0) = convex.
-  const DieSurface die
-      = DieSurface::polyline({Point<2>(0.0, 0.0), Point<2>(2.0, 0.0), Point<2>(2.0, -2.0)});
+  const CurveChain die
+      = polyline_chain({Point<2>(0.0, 0.0), Point<2>(2.0, 0.0), Point<2>(2.0, -2.0)});
   EXPECT_NEAR(die.total_length(), 4.0, 1e-15);
   const Projection corner = die.project(Point<2>(3.0, 1.0));
   expect_projection(corner, Point<2>(2.0, 0.0), std::sqrt(2.0), vec(1, 1) / std::sqrt(2.0), 2.0);
-  EXPECT_TRUE(corner.at_corner);
+  EXPECT_TRUE(corner.at_edge);
   EXPECT_FALSE(corner.at_end);
   // Exactly on the corner: zero gap, bisector normal.
   expect_projection(
@@ -167,49 +180,51 @@ TEST(DieSurface, PolylineConvexCorner)
   // Inside near the corner: the nearer side wins.
   const Projection in = die.project(Point<2>(1.8, -0.1));
   expect_projection(in, Point<2>(1.8, 0.0), -0.1, vec(0, 1), 1.8);
-  EXPECT_EQ(in.segment, 0u);
+  EXPECT_EQ(die.segment_index(in.coordinates[0]), 0u);
   const Projection in2 = die.project(Point<2>(1.9, -0.5));
   expect_projection(in2, Point<2>(2.0, -0.5), -0.1, vec(1, 0), 2.5);
-  EXPECT_EQ(in2.segment, 1u);
+  EXPECT_EQ(die.segment_index(in2.coordinates[0]), 1u);
 }
 
-TEST(DieSurface, PolylineConcaveCorner)
+TEST(CurveChain, PolylineConcaveCorner)
 {
   // Floor then wall (material below and right): left turn at (2, 0) = concave.
-  const DieSurface die
-      = DieSurface::polyline({Point<2>(0.0, 0.0), Point<2>(2.0, 0.0), Point<2>(2.0, 2.0)});
+  const CurveChain die
+      = polyline_chain({Point<2>(0.0, 0.0), Point<2>(2.0, 0.0), Point<2>(2.0, 2.0)});
   expect_projection(die.project(Point<2>(1.5, 0.2)), Point<2>(1.5, 0.0), 0.2, vec(0, 1), 1.5);
   expect_projection(die.project(Point<2>(1.8, 1.0)), Point<2>(2.0, 1.0), 0.2, vec(-1, 0), 3.0);
   // On the bisector: equal distances, the first segment is taken (no double counting).
   const Projection b = die.project(Point<2>(1.5, 0.5));
   expect_projection(b, Point<2>(1.5, 0.0), 0.5, vec(0, 1), 1.5);
-  EXPECT_EQ(b.segment, 0u);
+  EXPECT_EQ(die.segment_index(b.coordinates[0]), 0u);
   // Penetration into the wall near the corner: the nearer segment wins.
   const Projection w = die.project(Point<2>(2.05, 0.3));
   expect_projection(w, Point<2>(2.0, 0.3), -0.05, vec(-1, 0), 2.3);
-  EXPECT_EQ(w.segment, 1u);
+  EXPECT_EQ(die.segment_index(w.coordinates[0]), 1u);
   // Deep in the material wedge behind the corner: the corner itself, penetration.
   const Point<2>   x(2.3, -0.2);
   const Projection c = die.project(x);
   const double     d = std::sqrt(0.13);
   expect_projection(c, Point<2>(2.0, 0.0), -d, -vec(0.3, -0.2) / d, 2.0);
-  EXPECT_TRUE(c.at_corner);
+  EXPECT_TRUE(c.at_edge);
   expect_consistent(x, c);
 }
 
-TEST(DieSurface, ClosedPolylineAndReversal)
+TEST(CurveChain, ClosedPolylineAndReversal)
 {
   // Unit square travelled clockwise: material inside.
   const std::vector<Point<2>> square
       = {Point<2>(0, 0), Point<2>(0, 1), Point<2>(1, 1), Point<2>(1, 0)};
-  const DieSurface die = DieSurface::polyline(square, true);
+  const CurveChain die = polyline_chain(square, true);
   EXPECT_TRUE(die.is_closed());
   EXPECT_NEAR(die.total_length(), 4.0, 1e-15);
   EXPECT_NEAR(die.project(Point<2>(0.5, 0.6)).gap, -0.4, 1e-15);
   EXPECT_NEAR(die.project(Point<2>(-1.0, -1.0)).gap, std::sqrt(2.0), 1e-15);
-  EXPECT_NEAR(die.project(Point<2>(-1.0, -1.0)).s, 0.0, 1e-15); // corner joining last and first
+  EXPECT_NEAR(die.project(Point<2>(-1.0, -1.0)).coordinates[0],
+              0.0,
+              1e-15); // corner joining last and first
   // Reversed: the material is outside, the gaps change sign.
-  const DieSurface rev = die.reversed();
+  const CurveChain rev = die.reversed();
   EXPECT_NEAR(rev.project(Point<2>(0.5, 0.6)).gap, 0.4, 1e-15);
   EXPECT_NEAR(rev.project(Point<2>(-1.0, -1.0)).gap, -std::sqrt(2.0), 1e-15);
   // point_at wraps around for a closed chain.
@@ -218,10 +233,10 @@ TEST(DieSurface, ClosedPolylineAndReversal)
   EXPECT_NEAR(p[1], 1.0, 1e-15);
 }
 
-TEST(DieSurface, PolylineExtendedEnds)
+TEST(CurveChain, PolylineExtendedEnds)
 {
-  const DieSurface die = DieSurface::polyline(
-      {Point<2>(0.0, 0.0), Point<2>(1.0, 0.0), Point<2>(2.0, 1.0)}, false, true);
+  const CurveChain die
+      = polyline_chain({Point<2>(0.0, 0.0), Point<2>(1.0, 0.0), Point<2>(2.0, 1.0)}, false, true);
   EXPECT_TRUE(std::isinf(die.total_length()));
   const Projection a = die.project(Point<2>(-5.0, 1.0));
   expect_projection(a, Point<2>(-5.0, 0.0), 1.0, vec(0, 1), -5.0);
@@ -237,20 +252,20 @@ TEST(DieSurface, PolylineExtendedEnds)
   EXPECT_FALSE(b.at_end);
 }
 
-TEST(DieSurface, PunchLineArcComposite)
+TEST(CurveChain, PunchLineArcComposite)
 {
   // Punch pressing down: right wall, bottom, left wall, both corners rounded with r = 1.
-  const DieSurface punch = DieSurface::arc_line_composite(
-      {Point<2>(5, 5), Point<2>(5, 0), Point<2>(-5, 0), Point<2>(-5, 5)}, {1.0});
+  const CurveChain punch
+      = arc_line_chain({Point<2>(5, 5), Point<2>(5, 0), Point<2>(-5, 0), Point<2>(-5, 5)}, {1.0});
   ASSERT_EQ(punch.n_segments(), 5u);
-  EXPECT_EQ(punch.segment(1).type(), DieSegment::Type::arc);
+  EXPECT_EQ(punch.segment(1).type(), CurveSegment::Type::arc);
   EXPECT_NEAR(punch.total_length(), 16.0 + M_PI, 1e-13);
   // Outside the fillet at 45 degrees.
   const Tensor<1, 2> e = vec(std::cos(-M_PI / 4), std::sin(-M_PI / 4));
   const Projection   f = punch.project(Point<2>(4.0, 1.0) + 2.0 * e);
   expect_projection(f, Point<2>(4.0, 1.0) + e, 1.0, e, 4.0 + M_PI / 4.0);
-  EXPECT_NEAR(f.curvature, 1.0, 1e-14);
-  EXPECT_EQ(f.segment, 1u);
+  EXPECT_NEAR(f.curvatures[0], 1.0, 1e-14);
+  EXPECT_EQ(punch.segment_index(f.coordinates[0]), 1u);
   // Penetration under the bottom.
   expect_projection(
       punch.project(Point<2>(0.0, 0.3)), Point<2>(0.0, 0.0), -0.3, vec(0, -1), 8.0 + M_PI / 2.0);
@@ -259,29 +274,27 @@ TEST(DieSurface, PunchLineArcComposite)
       punch.project(Point<2>(-6.0, 3.0)), Point<2>(-5.0, 3.0), 1.0, vec(-1, 0), 14.0 + M_PI, 1e-12);
 }
 
-TEST(DieSurface, ConcaveFilletComposite)
+TEST(CurveChain, ConcaveFilletComposite)
 {
   // Floor then wall with a concave fillet r = 1 (centre (-1, 1)).
-  const DieSurface die
-      = DieSurface::arc_line_composite({Point<2>(-5, 0), Point<2>(0, 0), Point<2>(0, 5)}, {1.0});
+  const CurveChain   die = arc_line_chain({Point<2>(-5, 0), Point<2>(0, 0), Point<2>(0, 5)}, {1.0});
   const Tensor<1, 2> e = vec(std::cos(-M_PI / 4), std::sin(-M_PI / 4));
   const Projection   p = die.project(Point<2>(-1.0, 1.0) + 0.5 * e);
   expect_projection(p, Point<2>(-1.0, 1.0) + e, 0.5, -e, 4.0 + M_PI / 4.0);
-  EXPECT_NEAR(p.curvature, -1.0, 1e-14);
+  EXPECT_NEAR(p.curvatures[0], -1.0, 1e-14);
   // Behind the fillet, in the material.
   const Projection q = die.project(Point<2>(-1.0, 1.0) + 1.2 * e);
   expect_projection(q, Point<2>(-1.0, 1.0) + e, -0.2, -e, 4.0 + M_PI / 4.0);
-  EXPECT_THROW(
-      DieSurface::arc_line_composite({Point<2>(-1, 0), Point<2>(0, 0), Point<2>(0, 5)}, {2.0}),
-      ausroll::InputError);
+  EXPECT_THROW(arc_line_chain({Point<2>(-1, 0), Point<2>(0, 0), Point<2>(0, 5)}, {2.0}),
+               ausroll::InputError);
 }
 
-TEST(DieSurface, ArcLengthRoundTrip)
+TEST(CurveChain, ArcLengthRoundTrip)
 {
-  const DieSurface punch = DieSurface::arc_line_composite(
-      {Point<2>(5, 5), Point<2>(5, 0), Point<2>(-5, 0), Point<2>(-5, 5)}, {1.0});
-  const DieSurface roll = DieSurface::circle(Point<2>(0.5, -0.5), 2.0);
-  for (const DieSurface *die : {&punch, &roll})
+  const CurveChain punch
+      = arc_line_chain({Point<2>(5, 5), Point<2>(5, 0), Point<2>(-5, 0), Point<2>(-5, 5)}, {1.0});
+  const CurveChain roll = circle_chain(Point<2>(0.5, -0.5), 2.0);
+  for (const CurveChain *die : {&punch, &roll})
     for (unsigned int k = 0; k <= 40; ++k)
     {
       const double   s = die->total_length() * (k + 0.37) / 41.0;
@@ -291,7 +304,7 @@ TEST(DieSurface, ArcLengthRoundTrip)
       {
         const Point<2>   x = p + g * die->normal_at(s);
         const Projection pr = die->project(x);
-        EXPECT_NEAR(pr.s, s, 1e-12) << "s = " << s << ", g = " << g;
+        EXPECT_NEAR(pr.coordinates[0], s, 1e-12) << "s = " << s << ", g = " << g;
         EXPECT_NEAR(pr.gap, g, 1e-12);
         expect_consistent(x, pr);
       }
@@ -304,7 +317,7 @@ TEST(DieSurface, ArcLengthRoundTrip)
   EXPECT_NEAR(punch.point_at(1e3).distance(Point<2>(-5, 5)), 0.0, 1e-15);
 }
 
-TEST(DieSurface, PointsFile)
+TEST(CurveChain, PointsFile)
 {
   const std::string name = temporary_file("points.txt");
   {
@@ -315,11 +328,11 @@ TEST(DieSurface, PointsFile)
         << "  2.5 0.0\n"
         << "2.5 -1e0\n";
   }
-  const std::vector<Point<2>> points = DieSurface::read_points_file(name);
+  const std::vector<Point<2>> points = read_points_file(name);
   ASSERT_EQ(points.size(), 3u);
   EXPECT_EQ(points[1], Point<2>(2.5, 0.0));
   EXPECT_EQ(points[2], Point<2>(2.5, -1.0));
-  const DieSurface die = DieSurface::polyline_from_file(name);
+  const CurveChain die = polyline_chain_from_file(name);
   EXPECT_NEAR(die.total_length(), 3.5, 1e-15);
   EXPECT_NEAR(die.project(Point<2>(1.0, 0.5)).gap, 0.5, 1e-15);
   std::remove(name.c_str());
@@ -328,7 +341,7 @@ TEST(DieSurface, PointsFile)
   const std::string missing = temporary_file("does_not_exist.txt");
   try
   {
-    DieSurface::polyline_from_file(missing);
+    polyline_chain_from_file(missing);
     FAIL() << "no exception for a missing file";
   }
   catch (const std::runtime_error &e)
@@ -341,7 +354,7 @@ TEST(DieSurface, PointsFile)
   std::ofstream(one) << "1 2\n# nothing else\n";
   try
   {
-    DieSurface::polyline_from_file(one);
+    polyline_chain_from_file(one);
     FAIL() << "no exception for a single point";
   }
   catch (const std::runtime_error &e)
@@ -349,16 +362,16 @@ TEST(DieSurface, PointsFile)
     EXPECT_NE(std::string(e.what()).find(one), std::string::npos) << e.what();
   }
   std::ofstream(one) << "1 2\n3 x\n";
-  EXPECT_THROW(DieSurface::read_points_file(one), std::runtime_error);
+  EXPECT_THROW(read_points_file(one), std::runtime_error);
   std::ofstream(one) << "1 2\n3 4 5\n";
-  EXPECT_THROW(DieSurface::read_points_file(one), std::runtime_error);
+  EXPECT_THROW(read_points_file(one), std::runtime_error);
   std::remove(one.c_str());
 }
 
-TEST(DieSurface, SearchBand)
+TEST(CurveChain, SearchBand)
 {
-  const DieSurface die
-      = DieSurface::polyline({Point<2>(0.0, 0.0), Point<2>(2.0, 0.0), Point<2>(2.0, -2.0)});
+  const CurveChain die
+      = polyline_chain({Point<2>(0.0, 0.0), Point<2>(2.0, 0.0), Point<2>(2.0, -2.0)});
   EXPECT_FALSE(die.project(Point<2>(1.0, 5.0), 1.0).valid);
   EXPECT_FALSE(die.project(Point<2>(100.0, 100.0), 1.0).valid);
   const Projection near = die.project(Point<2>(1.0, 0.5), 1.0);
@@ -368,12 +381,12 @@ TEST(DieSurface, SearchBand)
   expect_projection(corner, Point<2>(2.0, 0.0), 0.5, vec(0.3, 0.4) / 0.5, 2.0);
 }
 
-TEST(DieSurface, InvoluteFlankMatchesBruteForce)
+TEST(CurveChain, InvoluteFlankMatchesBruteForce)
 {
   // Positive flank of a tooth with axis +x: base radius 20, beta_0 = 0.1, roll 0 ... 0.6.
-  const double      rb = 20.0, beta0 = 0.1;
-  const DieSurface  flank = DieSurface::involute_flank(Point<2>(), rb, beta0, -1, 0.0, 0.6);
-  const DieSegment &seg = flank.segment(0);
+  const double        rb = 20.0, beta0 = 0.1;
+  const CurveChain    flank = involute_flank_chain(Point<2>(), rb, beta0, -1, 0.0, 0.6);
+  const CurveSegment &seg = flank.segment(0);
   EXPECT_NEAR(flank.total_length(), 0.5 * rb * 0.36, 1e-13);
   // Start on the base circle at polar angle beta_0; tangent radial there.
   EXPECT_NEAR(
@@ -414,7 +427,7 @@ TEST(DieSurface, InvoluteFlankMatchesBruteForce)
   }
 }
 
-TEST(DieSurface, InvoluteGearDie)
+TEST(CurveChain, InvoluteGearDie)
 {
   using ausroll::geometry::InvoluteGear;
   using ausroll::geometry::ToothProportions;
@@ -425,7 +438,7 @@ TEST(DieSurface, InvoluteGearDie)
       prop.root_fillet_radius = fillet ? 0.6 : 0.0;
       const InvoluteGear g = InvoluteGear::from_diametral_pitch(z, 8.5, 22.0 * M_PI / 180.0, prop);
       const double       axis = 0.25;
-      const DieSurface   die = DieSurface::involute_gear(g, axis);
+      const CurveChain   die = involute_gear_chain(g, axis);
       EXPECT_TRUE(die.is_closed());
       // Perimeter of the exact gear vs a fine polygon of the sampled outline.
       const auto outline = g.gear_outline(0.01, axis);
@@ -463,11 +476,12 @@ TEST(DieSurface, InvoluteGearDie)
       EXPECT_NEAR(pp.gap, 0.0, 1e-11);
       EXPECT_NEAR(pp.normal[0], std::cos(axis) * nf[0] - std::sin(axis) * nf[1], 1e-10);
       EXPECT_NEAR(pp.normal[1], std::sin(axis) * nf[0] + std::cos(axis) * nf[1], 1e-10);
-      EXPECT_EQ(die.segment(pp.segment).type(), DieSegment::Type::involute);
+      EXPECT_EQ(die.segment(die.segment_index(pp.coordinates[0])).type(),
+                CurveSegment::Type::involute);
     }
 }
 
-TEST(DieSurface, GearSectorAndRandomPoints)
+TEST(CurveChain, GearSectorAndRandomPoints)
 {
   using ausroll::geometry::InvoluteGear;
   using ausroll::geometry::ToothProportions;
@@ -475,7 +489,7 @@ TEST(DieSurface, GearSectorAndRandomPoints)
   prop.root_fillet_radius = 0.4;
   const InvoluteGear g = InvoluteGear::from_diametral_pitch(31, 8.5, 22.0 * M_PI / 180.0, prop);
   const double       axis = M_PI / 2.0;
-  const DieSurface   sector = DieSurface::involute_gear(g, axis, 3);
+  const CurveChain   sector = involute_gear_chain(g, axis, 3);
   EXPECT_FALSE(sector.is_closed());
   // Starts and ends on the root circle in the middle of the spaces around the 3 teeth.
   const double half_sector = 1.5 * g.angular_pitch();
@@ -489,8 +503,7 @@ TEST(DieSurface, GearSectorAndRandomPoints)
                                      g.root_radius() * std::sin(axis - half_sector))),
               0.0,
               1e-10);
-  EXPECT_NEAR(
-      sector.total_length() * 31.0 / 3.0, DieSurface::involute_gear(g).total_length(), 1e-9);
+  EXPECT_NEAR(sector.total_length() * 31.0 / 3.0, involute_gear_chain(g).total_length(), 1e-9);
   // Random points near the middle tooth: exact distance vs dense sampling, and consistency.
   std::mt19937                           rng(7);
   std::uniform_real_distribution<double> ur(g.root_radius() - 1.0, g.tip_radius() + 1.0),
@@ -509,12 +522,12 @@ TEST(DieSurface, GearSectorAndRandomPoints)
   }
 }
 
-TEST(DieSurface, InvalidChainsThrow)
+TEST(CurveChain, InvalidChainsThrow)
 {
-  EXPECT_THROW(DieSurface({DieSegment::line(Point<2>(0, 0), Point<2>(1, 0)),
-                           DieSegment::line(Point<2>(1, 0.1), Point<2>(2, 0))},
+  EXPECT_THROW(CurveChain({CurveSegment::line(Point<2>(0, 0), Point<2>(1, 0)),
+                           CurveSegment::line(Point<2>(1, 0.1), Point<2>(2, 0))},
                           false),
                ausroll::InputError);
-  EXPECT_THROW(DieSurface::polyline({Point<2>(0, 0), Point<2>(0, 0)}), std::runtime_error);
-  EXPECT_THROW(DieSurface::circle(Point<2>(), -1.0), ausroll::InputError);
+  EXPECT_THROW(polyline_chain({Point<2>(0, 0), Point<2>(0, 0)}), std::runtime_error);
+  EXPECT_THROW(circle_chain(Point<2>(), -1.0), ausroll::InputError);
 }

@@ -219,7 +219,7 @@ TEST(EllipseSurface, ArcLengthAndPeriod)
 
 TEST(EllipseSurface, CircleLimitEqualsCircleShape)
 {
-  // a = b = r: the ellipse and the circle shape (a DieSurface arc) agree in every field
+  // a = b = r: the ellipse and the circle shape (a CurveChain arc) agree in every field
   for (const bool inside : {true, false})
   {
     CircleParameters circle_parameters;
@@ -278,7 +278,7 @@ TEST(EllipseSurface, FromItsParameterSubsection)
   const SurfaceProjection<2> top = die.surface().project(Point<2>(1., 6.));
   EXPECT_NEAR(top.point[1], 5., 1e-14);
   EXPECT_NEAR(top.curvatures[0], 3., 1e-12);
-  EXPECT_NEAR(die.die_surface().project(Point<2>(1., 6.)).s, 0., 1e-12);
+  EXPECT_NEAR(die.die_surface().project(Point<2>(1., 6.)).coordinates[0], 0., 1e-12);
   EXPECT_TRUE(die.die_surface().is_closed());
   // an invalid subsection entry names its full path
   std::istringstream bad("subsection Contact\n subsection Die 0\n  subsection Ellipse\n"

@@ -1,19 +1,21 @@
 /**
  * @file test_gear_die_tip_round.cc
- * Unit tests of the tip rounds of the involute gear die (DieSurface::involute_gear with
+ * Unit tests of the tip rounds of the involute gear die (CurveChain::involute_gear with
  * tip_round > 0, die entry `Tip radius`): tangent continuity, and the round checked against
  * independent references: its centre lies at the distance tip_round from the sharp involute
  * (brute-force minimum over the flank) and from the outside circle.
  */
-#include <ausroll/contact/die_surface.h>
+#include <ausroll/contact/surfaces/involute_gear.h>
+#include <ausroll/geometry/curve_chain.h>
 #include <ausroll/geometry/involute_gear.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-using ausroll::contact::DieSegment;
-using ausroll::contact::DieSurface;
+using ausroll::contact::surfaces::involute_gear_chain;
+using ausroll::geometry::CurveChain;
+using ausroll::geometry::CurveSegment;
 using ausroll::geometry::FlankSide;
 using ausroll::geometry::InvoluteGear;
 using ausroll::geometry::ToothProportions;
@@ -66,21 +68,21 @@ TEST(GearDieTipRound, TangentToFlankAndOutsideCircle)
 {
   const InvoluteGear g = thesis_die();
   const double       axis = 0.3;
-  const DieSurface   sharp = DieSurface::involute_gear(g, axis, 1);
+  const CurveChain   sharp = involute_gear_chain(g, axis, 1);
   for (const double rho : {0.1, 0.4, 0.8})
   {
     SCOPED_TRACE(rho);
-    const DieSurface die = DieSurface::involute_gear(g, axis, 1, rho);
+    const CurveChain die = involute_gear_chain(g, axis, 1, rho);
     ASSERT_EQ(die.n_segments(), sharp.n_segments() + 2);
     const auto is_round = [&](const unsigned int i)
     {
-      const DieSegment &s = die.segment(i);
-      return s.type() == DieSegment::Type::arc && std::abs(s.curvature(0.0) * rho - 1.0) < 1e-9;
+      const CurveSegment &s = die.segment(i);
+      return s.type() == CurveSegment::Type::arc && std::abs(s.curvature(0.0) * rho - 1.0) < 1e-9;
     };
     unsigned int n_rounds = 0;
     for (unsigned int i = 0; i < die.n_segments(); ++i)
     {
-      const DieSegment &s = die.segment(i);
+      const CurveSegment &s = die.segment(i);
       // G1: both ends of a round join tangentially (flank -> round -> tip land -> round -> flank;
       // the root corners of this fillet-less die stay sharp).
       if (i + 1 < die.n_segments() && (is_round(i) || is_round(i + 1)))
@@ -119,8 +121,8 @@ TEST(GearDieTipRound, TangentToFlankAndOutsideCircle)
 TEST(GearDieTipRound, BadRadius)
 {
   const InvoluteGear g = thesis_die();
-  EXPECT_ANY_THROW(DieSurface::involute_gear(g, 0.0, 1, -0.1));
+  EXPECT_ANY_THROW(involute_gear_chain(g, 0.0, 1, -0.1));
   // A round wider than the tip land (tip thickness about 2.2 mm) leaves no land.
-  EXPECT_ANY_THROW(DieSurface::involute_gear(g, 0.0, 1, 3.0));
-  EXPECT_NO_THROW(DieSurface::involute_gear(g, 0.0, 0, 0.5));
+  EXPECT_ANY_THROW(involute_gear_chain(g, 0.0, 1, 3.0));
+  EXPECT_NO_THROW(involute_gear_chain(g, 0.0, 0, 0.5));
 }

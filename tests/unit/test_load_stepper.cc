@@ -12,12 +12,14 @@
  */
 #include <ausroll/core/exceptions.h>
 #include <ausroll/solver/load_stepper.h>
+#include <ausroll/solver/step_controls/adaptive.h>
 
 #include <deal.II/base/conditional_ostream.h>
 
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -304,7 +306,7 @@ TEST(LoadStepper, AdaptiveStepControlStopsAtTheMinimumStep)
 {
   Logs              logs;
   LoadingParameters l = loading();
-  l.step_control = StepControl::adaptive;
+  l.step_control = "adaptive";
   l.minimum_step_fraction = 0.5;
   LoadStepper stepper(l, "out", logs.log, logs.detail_log);
   MockProblem p;
@@ -324,8 +326,10 @@ TEST(LoadStepper, AdaptiveStepControlShrinksAndGrows)
 {
   Logs              logs;
   LoadingParameters l = loading();
-  l.step_control = StepControl::adaptive;
-  l.target_newton_iterations = 6; // 12 iterations halve the step; 2 are easy (<= 3)
+  l.step_control = "adaptive";
+  auto adaptive = std::make_shared<ausroll::solver::AdaptiveParameters>();
+  adaptive->target_newton_iterations = 6; // 12 iterations halve the step; 2 are easy (<= 3)
+  l.step_control_parameters = adaptive;
   LoadStepper stepper(l, "out", logs.log, logs.detail_log);
   MockProblem p;
   p.iterations = [](unsigned int step) { return step == 1 ? 12u : 2u; };
@@ -344,7 +348,7 @@ TEST(LoadStepper, AdaptiveAfterCutbackKeepsTheSizeTaken)
 {
   Logs              logs;
   LoadingParameters l = loading();
-  l.step_control = StepControl::adaptive;
+  l.step_control = "adaptive";
   LoadStepper stepper(l, "out", logs.log, logs.detail_log);
   MockProblem p;
   p.converges = [](unsigned int step, double dt, double) { return step > 1 || dt <= 0.2; };

@@ -5,7 +5,7 @@
  *
  * References and tolerances:
  * - Brute force: the surface is sampled densely (independently of the projection code: explicit
- *   parametrisations, or DieSurface::point_at() along the chain) and the smallest sample distance
+ *   parametrisations, or CurveChain::point_at() along the chain) and the smallest sample distance
  *   d_s compared with the projection's distance d. A projection onto the true closest point
  *   satisfies d <= d_s (every sample is a surface point; 1e-9 for rounding) and d_s - d <= delta,
  *   delta = the largest distance of a surface point from its nearest sample (half the diagonal of
@@ -23,15 +23,20 @@
  *   |g(x) - g(y)| <= |x - y| (+1e-12) for pairs of close points around edges; along a path
  *   outside an edge the projected point and the normal move continuously.
  */
-#include <ausroll/contact/die_surface.h>
+#include <ausroll/contact/surfaces/arc_line.h>
+#include <ausroll/contact/surfaces/circle.h>
 #include <ausroll/contact/surfaces/cone.h>
 #include <ausroll/contact/surfaces/extruded_profile.h>
 #include <ausroll/contact/surfaces/finite_cylinder.h>
+#include <ausroll/contact/surfaces/flat.h>
+#include <ausroll/contact/surfaces/involute_gear.h>
 #include <ausroll/contact/surfaces/plane.h>
+#include <ausroll/contact/surfaces/polyline.h>
 #include <ausroll/contact/surfaces/revolved_profile.h>
 #include <ausroll/contact/surfaces/surface_factory.h>
 #include <ausroll/contact/surfaces/torus.h>
 #include <ausroll/core/exceptions.h>
+#include <ausroll/geometry/curve_chain.h>
 #include <ausroll/geometry/involute_gear.h>
 
 #include <deal.II/base/numbers.h>
@@ -47,6 +52,8 @@
 
 using namespace ausroll::contact;
 using namespace ausroll::contact::surfaces;
+using ausroll::geometry::CurveChain;
+using ausroll::geometry::CurveSegment;
 using dealii::Point;
 using dealii::Tensor;
 namespace numbers = dealii::numbers;
@@ -153,7 +160,7 @@ namespace
   }
 
   /** Samples of a surface of revolution of @p chain (radius at most @p r_max): covering radius. */
-  double sample_revolved(const DieSurface      &chain,
+  double sample_revolved(const CurveChain      &chain,
                          const double           ds,
                          const unsigned int     n_theta,
                          const double           r_max,
@@ -174,14 +181,14 @@ namespace
   }
 
   /** Polygon through the chain (every segment end a vertex, curved segments sampled). */
-  std::vector<Point<2>> chain_polygon(const DieSurface &chain, const double ds)
+  std::vector<Point<2>> chain_polygon(const CurveChain &chain, const double ds)
   {
     std::vector<Point<2>> poly;
     for (unsigned int i = 0; i < chain.n_segments(); ++i)
     {
-      const DieSegment  &seg = chain.segment(i);
-      const unsigned int n
-          = seg.type() == DieSegment::Type::line
+      const CurveSegment &seg = chain.segment(i);
+      const unsigned int  n
+          = seg.type() == CurveSegment::Type::line
                 ? 1
                 : std::max(1u, static_cast<unsigned int>(std::ceil(seg.length() / ds)));
       for (unsigned int k = 0; k < n; ++k)
@@ -198,7 +205,7 @@ namespace
    * origin: a polygon for the inside test of points in that sector.
    */
   std::vector<Point<2>>
-  star_sector_polygon(const DieSurface &chain, const double ds, const double max_angle)
+  star_sector_polygon(const CurveChain &chain, const double ds, const double max_angle)
   {
     std::vector<std::pair<double, Point<2>>> pts;
     for (const Point<2> &q : chain_polygon(chain, ds))
@@ -317,12 +324,12 @@ namespace
     return (r <= a && v <= h) || (r <= R && v <= b) || std::hypot(r - a, v - b) <= re;
   }
 
-  /** The meridian profile of the cylinder as a DieSurface (for sampling and comparison). */
-  DieSurface cylinder_profile(const double R, const double h, const double re)
+  /** The meridian profile of the cylinder as a CurveChain (for sampling and comparison). */
+  CurveChain cylinder_profile(const double R, const double h, const double re)
   {
     const std::vector<Point<2>> pts{
         Point<2>(0., h), Point<2>(R, h), Point<2>(R, -h), Point<2>(0., -h)};
-    return re > 0. ? DieSurface::arc_line_composite(pts, {re}) : DieSurface::polyline(pts);
+    return re > 0. ? arc_line_chain(pts, {re}) : polyline_chain(pts);
   }
 } // namespace
 
@@ -411,7 +418,7 @@ TEST(Surfaces3D, TorusAgainstBruteForce)
   std::vector<Point<3>> canonical;
   const double          delta
       = 1.0001
-        * sample_revolved(DieSurface::circle(Point<2>(R, 0.), rho), 0.02, 2400, R + rho, canonical);
+        * sample_revolved(circle_chain(Point<2>(R, 0.), rho), 0.02, 2400, R + rho, canonical);
   std::vector<Point<3>> samples, queries;
   for (const Point<3> &s : canonical)
     samples.push_back(frame.to_local(s));
@@ -481,7 +488,7 @@ TEST(Surfaces3D, RevolvedCircleIsTheTorus)
   const double          R = 6., rho = 2.;
   const Torus           torus(oblique_origin, oblique_axis, R, rho, oblique_reference);
   const RevolvedProfile rev(
-      DieSurface::circle(Point<2>(R, 0.), rho), oblique_origin, oblique_axis, oblique_reference);
+      circle_chain(Point<2>(R, 0.), rho), oblique_origin, oblique_axis, oblique_reference);
   const Frame3D frame(oblique_origin, oblique_axis, oblique_reference);
   for (const Point<3> &q : random_points(Point<3>(-9, -9, -3), Point<3>(9, 9, 3), 400, 8))
   {
@@ -506,8 +513,7 @@ TEST(Surfaces3D, RevolvedBarrelAndConeAgainstBruteForce)
   for (const bool is_barrel : {true, false})
   {
     const std::vector<Point<2>> &pts = is_barrel ? barrel : cone;
-    const DieSurface             chain
-        = is_barrel ? DieSurface::arc_line_composite(pts, {0.5}) : DieSurface::polyline(pts);
+    const CurveChain      chain = is_barrel ? arc_line_chain(pts, {0.5}) : polyline_chain(pts);
     const RevolvedProfile rev(chain, oblique_origin, oblique_axis, oblique_reference);
     const Frame3D         frame(oblique_origin, oblique_axis, oblique_reference);
     std::vector<Point<3>> canonical, samples, queries;
@@ -537,7 +543,7 @@ TEST(Surfaces3D, RevolvedBarrelAndConeAgainstBruteForce)
       expect_curvatures_by_differences(rev, frame.to_local(q));
   }
   // a profile reaching r < 0 is refused
-  EXPECT_THROW(RevolvedProfile(DieSurface::polyline({Point<2>(-1., 1.), Point<2>(2., 1.)})),
+  EXPECT_THROW(RevolvedProfile(polyline_chain({Point<2>(-1., 1.), Point<2>(2., 1.)})),
                ausroll::EntryError);
 }
 
@@ -546,14 +552,9 @@ TEST(Surfaces3D, ExtrudedCircleIsTheSharpCylinder)
 {
   const double          R = 5., h = 2.;
   const FiniteCylinder  cyl(oblique_origin, oblique_axis, R, 2. * h, 0., oblique_reference);
-  const ExtrudedProfile ext(DieSurface::circle(Point<2>(), R),
-                            -h,
-                            h,
-                            true,
-                            oblique_origin,
-                            oblique_axis,
-                            oblique_reference);
-  const Frame3D         frame(oblique_origin, oblique_axis, oblique_reference);
+  const ExtrudedProfile ext(
+      circle_chain(Point<2>(), R), -h, h, true, oblique_origin, oblique_axis, oblique_reference);
+  const Frame3D frame(oblique_origin, oblique_axis, oblique_reference);
   for (const Point<3> &q : random_points(Point<3>(-7, -7, -4), Point<3>(7, 7, 4), 400, 11))
   {
     const Point<3>             x = frame.to_local(q);
@@ -575,7 +576,7 @@ TEST(Surfaces3D, ExtrudedGearAgainstBruteForce)
 {
   // 20 teeth, m = 2 mm, 20 degrees: a spur-gear die of face width 4 with end caps
   const ausroll::geometry::InvoluteGear gear(20, 2., 20. * numbers::PI / 180.);
-  const DieSurface                      chain = DieSurface::involute_gear(gear);
+  const CurveChain                      chain = involute_gear_chain(gear);
   const double                          z0 = -2., z1 = 2.;
   const ExtrudedProfile ext(chain, z0, z1, true, oblique_origin, oblique_axis, oblique_reference);
   const Frame3D         frame(oblique_origin, oblique_axis, oblique_reference);
@@ -627,7 +628,7 @@ TEST(Surfaces3D, ExtrudedOpenEndsAndInfinite)
 {
   // a flat strip y = 0 (material below) of width [0, 3] without caps: beyond z = 3 the points
   // wrap around the end line (at_end); the infinite extrusion is the 2D projection times z
-  const DieSurface           flat = DieSurface::flat(Point<2>(), Tensor<1, 2>({1., 0.}));
+  const CurveChain           flat = flat_chain(Point<2>(), Tensor<1, 2>({1., 0.}));
   const ExtrudedProfile      open(flat, 0., 3., false);
   const ExtrudedProfile      infinite(flat);
   const SurfaceProjection<3> e = open.project(Point<3>(1., 0.5, 4.));
@@ -653,7 +654,7 @@ TEST(Surfaces3D, SignedGapIsOneLipschitzAroundEdges)
   const FiniteCylinder  round(Point<3>(), vec(0., 0., 1.), 5., 4., 1.);
   const Torus           torus(Point<3>(), vec(0., 0., 1.), 6., 2.);
   const ExtrudedProfile gear(
-      DieSurface::involute_gear(ausroll::geometry::InvoluteGear(20, 2., 20. * numbers::PI / 180.)),
+      involute_gear_chain(ausroll::geometry::InvoluteGear(20, 2., 20. * numbers::PI / 180.)),
       -2.,
       2.,
       true);
@@ -961,22 +962,17 @@ TEST(Surfaces3D, PointAtInvertsTheProjection)
   const FiniteCylinder  sharp(oblique_origin, oblique_axis, 5., 3., 0., oblique_reference);
   const Torus           torus(oblique_origin, oblique_axis, 5., 1.5, oblique_reference);
   const Plane           plane(oblique_origin, oblique_axis, oblique_reference, 3., 2.);
-  const RevolvedProfile barrel(DieSurface::arc_line_composite({Point<2>(0., 2.),
-                                                               Point<2>(4., 2.),
-                                                               Point<2>(5., 0.),
-                                                               Point<2>(4., -2.),
-                                                               Point<2>(0., -2.)},
-                                                              {0.5}),
+  const RevolvedProfile barrel(arc_line_chain({Point<2>(0., 2.),
+                                               Point<2>(4., 2.),
+                                               Point<2>(5., 0.),
+                                               Point<2>(4., -2.),
+                                               Point<2>(0., -2.)},
+                                              {0.5}),
                                oblique_origin,
                                oblique_axis,
                                oblique_reference);
-  const ExtrudedProfile extruded(DieSurface::involute_gear(gear),
-                                 -2.,
-                                 2.,
-                                 false,
-                                 oblique_origin,
-                                 oblique_axis,
-                                 oblique_reference);
+  const ExtrudedProfile extruded(
+      involute_gear_chain(gear), -2., 2., false, oblique_origin, oblique_axis, oblique_reference);
   const std::vector<const RigidSurface<3> *> shapes{
       &cylinder, &sharp, &torus, &plane, &barrel, &extruded};
   for (const RigidSurface<3> *shape : shapes)

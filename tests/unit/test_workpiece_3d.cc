@@ -371,7 +371,7 @@ TEST(Workpiece3d, ExtrudedGearToothMidPlaneEqualsTwoDimensionalMesh)
                         {ids::symmetry, area2}},
                        area2),
             1e-9);
-  const double arc = p3.gear_tooth.inner_radius() * 2. * M_PI / p3.gear_tooth.n_teeth * 2. * h;
+  const double arc = p3.gear_tooth.inner_radius() * 2. * M_PI / p3.gear_tooth.size.teeth * 2. * h;
   EXPECT_NEAR(area.at(ids::inner_arc), arc, 1e-6 * arc);
 }
 

@@ -16,18 +16,9 @@
 
 namespace ausroll::contact
 {
-  /** How contact statuses are found (`Contact/Strategy`). */
-  enum class ContactStrategy
-  {
-    active_set,          ///< statuses updated inside the Newton loop (semi-smooth Newton)
-    nested_active_set,   ///< Newton converges with fixed statuses, then they are updated and
-                         ///< Newton continues (outer loop; robust for rolling with friction)
-    load_increment_ratio ///< statuses fixed per sub-step; steps scaled to the next status change
-                         ///< (NOFEAP)
-  };
-
   class FrictionParameters;
   class MotionParameters;
+  class StrategyParameters;
 
   /** True if @p shape (a `Shape` value) names a 3D die shape. */
   bool is_3d_shape(const std::string &shape);
@@ -68,11 +59,14 @@ namespace ausroll::contact
   /** Parameters of subsection `Contact`. */
   struct ContactParameters
   {
-    static constexpr unsigned int max_dies = 4;                           ///< `Die 0` .. `Die 3`
-    ContactStrategy               strategy = ContactStrategy::active_set; ///< `Strategy`
-    std::vector<DieParameters>    dies;  ///< the first `Number of dies`
-    unsigned int max_status_changes = 6; ///< `Maximum status changes` per node and step
-    double       ratio_tolerance = 1e-3; ///< `Ratio tolerance` of the load-increment ratio
+    static constexpr unsigned int max_dies = 4; ///< `Die 0` .. `Die 3`
+    /** `Strategy`: the name of a registered contact strategy (contact/contact_strategy.h). */
+    std::string strategy = "active set";
+    /** The entries of the strategy's own subsection `Contact/<Strategy>` (`Load increment
+        ratio`); set by parse_parameters(); null: the registered defaults of `strategy`. */
+    std::shared_ptr<const StrategyParameters> strategy_parameters;
+    std::vector<DieParameters>                dies; ///< the first `Number of dies`
+    unsigned int max_status_changes = 6;            ///< `Maximum status changes` per node and step
     /** `Curvature tangent`: the turning of the die normal in the tangent of slipping nodes
         (contact/curved_die_tangent.h). */
     bool curvature_tangent = false;
@@ -87,8 +81,8 @@ namespace ausroll::contact
      * The entries an old `.prm` file may still set and where they are now: old full path ->
      * new full path(s) (the shape entries moved from `Contact/Die N` into one subsection per
      * shape, the friction entries into one subsection per law, the motion entries into one
-     * subsection of `Motion` per motion). Reading the file turns such an
-     * unknown entry into this message.
+     * subsection of `Motion` per motion, `Ratio tolerance` into `Load increment ratio`). Reading
+     * the file turns such an unknown entry into this message.
      */
     static std::map<std::string, std::string> moved_entries();
     /** Read subsection `Contact`. Files are resolved relative to @p input_directory. */

@@ -3,7 +3,10 @@
  * @file contact_strategy.h
  * The contact strategies of `Contact/Strategy` as objects: each owns its loop logic (when nodes
  * close, when statuses are judged, how a load step ends), so that the scene makes the same calls
- * whatever the strategy.
+ * whatever the strategy. This file holds the interface (ContactStatusSet, StatusStrategy, the
+ * fixed-status base), the parameters of a strategy and their registry; the strategies are in
+ * contact/strategies/, one file pair each (active_set, nested_active_set, load_increment_ratio)
+ * with its StrategyParameters, registered with AUSROLL_REGISTER_CONTACT_STRATEGY.
  *
  * A load step with contact, as the scene drives it:
  *
@@ -28,11 +31,13 @@
 #pragma once
 
 #include <ausroll/contact/contact_parameters.h>
+#include <ausroll/core/registry.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
+#include <string>
 
 namespace ausroll::contact
 {
@@ -181,80 +186,31 @@ namespace ausroll::contact
   };
 
   /**
-   * Active set (`Strategy = active set`): inside Newton, penetrating open nodes close at every
-   * iterate and the reactions of each assembly judge the closed nodes at once (tension opens,
-   * |R_t| > T(R_n) slips, reversed slip sticks); the assembly is repeated with the new
-   * constraints (at most max_reassemblies times per iterate).
+   * The parameters of one contact strategy: the entries of its own subsection `Contact/<Name>`
+   * (none for the active sets), registered in StrategyRegistry with
+   * AUSROLL_REGISTER_CONTACT_STRATEGY at the end of the strategy's own `.cc`
+   * (contact/strategies/).
    */
-  class ActiveSet : public StatusStrategy
+  class StrategyParameters : public RegisteredParameters
   {
   public:
-    using StatusStrategy::StatusStrategy;
-
-    /** Re-assemblies per Newton iterate after status changes. */
-    static constexpr unsigned int max_reassemblies = 4;
-
-    void         begin_iterate(const double t) override;
-    void         update_geometry(const ContactStatusSet::Vector &u) override;
-    unsigned int update_at_iterate() override;
-
-  private:
-    unsigned int passes = 0; ///< assemblies at this iterate
+    /** The strategy acting on @p nodes (which must outlive it). */
+    virtual std::unique_ptr<StatusStrategy> create(ContactStatusSet &nodes) const = 0;
   };
 
-  /**
-   * Nested active set (`Strategy = nested active set`): penetrating open nodes close at every
-   * iterate unless they have changed in this step; all other status changes are judged at
-   * converged states (an outer loop around Newton), a changed node only after a solve with its
-   * new constraint. A node opened by tension that re-penetrates slightly in the next iterates does
-   * not chatter. The line search may backtrack with second-order gaps on curved dies.
-   */
-  class NestedActiveSet : public StatusStrategy
-  {
-  public:
-    explicit NestedActiveSet(ContactStatusSet &nodes);
-
-    void         update_geometry(const ContactStatusSet::Vector &u) override;
-    unsigned int update_at_convergence(const ContactStatusSet::Vector &u,
-                                       dealii::ConditionalOStream     &log) override;
-    bool         backtrack_with_small_constraint_gaps() const override;
-    /** Nodes that closed in the last step and stick slip instead
-        (ContactStatusSet::release_fresh_sticks()). */
-    unsigned int release_after_failure() override;
-  };
+  /** The registry of the contact strategies (`Contact/Strategy`). */
+  using StrategyRegistry = Registry<StrategyParameters>;
 
   /**
-   * Load-increment ratio (`Strategy = load increment ratio`, NOFEAP Appendix A): statuses are
-   * fixed during a sub-step; after each converged sub-step the fraction alpha of it at which the
-   * first node changes status is found by linear interpolation from the committed state, and the
-   * sub-step is shortened to alpha (the change then lies at its end) until alpha >= 1 - tolerance;
-   * the changes at the end are then applied. Nodes touching a die at the start of a step close
-   * before it; a change at the very start of a sub-step is applied and the sub-step solved again.
-   */
-  class LoadIncrementRatio : public StatusStrategy
-  {
-  public:
-    /** @p tolerance: `Ratio tolerance`, the fraction of a sub-step within which an event counts
-        as at its end (or start). */
-    LoadIncrementRatio(ContactStatusSet &nodes, const double tolerance);
-
-    /** Sub-steps per load step after which the step is accepted whatever alpha. */
-    static constexpr unsigned int max_substeps = 200;
-
-    void begin_step(const ContactStatusSet::Vector &u, const double t_start) override;
-    StepDecision
-    end_of_step(const double dt, const double end_time, dealii::ConditionalOStream &log) override;
-
-  private:
-    double       tolerance;
-    unsigned int substeps = 0; ///< sub-steps of the current load step
-  };
-
-  /**
-   * The strategy `parameters.strategy` acting on @p nodes; the fixed-status base strategy when
-   * @p has_dies is false (nothing to decide).
+   * The strategy `parameters.strategy` acting on @p nodes, made by its parameters
+   * (`parameters.strategy_parameters`, or the registered defaults of `parameters.strategy` when
+   * they are null); the fixed-status base strategy when @p has_dies is false (nothing to decide).
    */
   std::unique_ptr<StatusStrategy> make_status_strategy(const ContactParameters &parameters,
                                                        ContactStatusSet        &nodes,
                                                        const bool               has_dies);
 } // namespace ausroll::contact
+
+/** Register the contact-strategy parameters @p Class (see AUSROLL_REGISTER). */
+#define AUSROLL_REGISTER_CONTACT_STRATEGY(Class, name, subsection, description) \
+  AUSROLL_REGISTER(::ausroll::contact::StrategyParameters, Class, name, subsection, description)

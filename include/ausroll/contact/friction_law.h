@@ -110,21 +110,9 @@ namespace ausroll::contact
    * (none for frictionless and sticking), registered in FrictionRegistry with
    * AUSROLL_REGISTER_FRICTION_LAW at the end of the law's own `.cc` (contact/friction/).
    */
-  class FrictionParameters
+  class FrictionParameters : public RegisteredParameters
   {
   public:
-    virtual ~FrictionParameters() = default;
-
-    /** Read the law's subsection (entered by the caller; @p path its full path). */
-    virtual void parse(dealii::ParameterHandler &prm,
-                       const std::string        &path,
-                       const std::string        &input_directory)
-    {
-      (void)prm;
-      (void)path;
-      (void)input_directory;
-    }
-
     /** True if these parameters make the law frictionless (a zero coefficient or factor):
         closed nodes then slip freely (the Frictionless law is created instead). */
     virtual bool frictionless() const { return false; }

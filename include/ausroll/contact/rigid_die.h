@@ -6,7 +6,6 @@
 
 #include <ausroll/contact/contact_parameters.h>
 #include <ausroll/contact/die_motion.h>
-#include <ausroll/contact/die_surface.h>
 #include <ausroll/contact/friction_law.h>
 #include <ausroll/contact/rigid_surface.h>
 
@@ -56,12 +55,14 @@ namespace ausroll::contact
     {
     }
 
-    /**
-     * Closest point of the die to @p x (die coordinates) within @p max_distance, with the arc
-     * length s = coordinates[0] (a DieSurface chain answers itself, with its segment index).
-     */
-    Projection project(const dealii::Point<2> &x,
-                       double max_distance = std::numeric_limits<double>::infinity()) const;
+    /** Closest point of the die to @p x (die coordinates) within @p max_distance, with the arc
+        length s = coordinates[0]. */
+    SurfaceProjection<2> project(const dealii::Point<2> &x,
+                                 double                  max_distance
+                                 = std::numeric_limits<double>::infinity()) const
+    {
+      return surface->project(x, max_distance);
+    }
 
     /** Point at arc length @p s (wrapped on a closed die, clamped on an open one). */
     dealii::Point<2> point_at(const double s) const { return surface->point_at({{s}}); }

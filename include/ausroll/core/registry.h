@@ -29,6 +29,28 @@
 namespace ausroll
 {
   /**
+   * A base for the parameters of a pluggable kind whose members may have no entries: parse() of
+   * the member's own subsection does nothing unless the member overrides it (contact strategies,
+   * step controls, friction laws).
+   */
+  class RegisteredParameters
+  {
+  public:
+    virtual ~RegisteredParameters() = default;
+
+    /** Read the member's subsection (entered by the caller; @p path its full path with a
+        trailing slash, for InputErrors naming the entry). Default: no entries. */
+    virtual void parse(dealii::ParameterHandler &prm,
+                       const std::string        &path,
+                       const std::string        &input_directory)
+    {
+      (void)prm;
+      (void)path;
+      (void)input_directory;
+    }
+  };
+
+  /**
    * The registry of one pluggable kind whose parameters objects derive from @p Parameters, which
    * has `virtual void parse(dealii::ParameterHandler &, const std::string &path, const std::string
    * &input_directory)`; @p path is the full path of the entered subsection with a trailing slash

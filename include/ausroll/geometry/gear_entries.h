@@ -17,12 +17,29 @@ namespace ausroll::geometry
   /**
    * Declare `Number of teeth` (default @p default_teeth, documented as @p teeth_documentation),
    * `Diametral pitch`, `Module`, `Pressure angle`, `Addendum` and `Dedendum` in the current
-   * subsection of @p prm. Read them back with InvoluteGear::from_pitch_or_module() and
-   * ToothProportions (negative addendum / dedendum: the module-based default).
+   * subsection of @p prm. Read them back with GearSize::parse().
    */
   void declare_gear_size_entries(dealii::ParameterHandler &prm,
                                  const std::string        &default_teeth,
                                  const std::string        &teeth_documentation);
+
+  /**
+   * The values of the gear size entries (declare_gear_size_entries()) of one subsection; the
+   * gear is made from them with InvoluteGear::from_pitch_or_module() and ToothProportions
+   * (negative addendum / dedendum: the module-based default).
+   */
+  struct GearSize
+  {
+    unsigned int teeth = 20;            ///< `Number of teeth` z
+    double       diametral_pitch = 8.5; ///< `Diametral pitch` (teeth per inch; 0: use Module)
+    double       module = 0.;           ///< `Module` m (mm), when Diametral pitch = 0
+    double       pressure_angle = 22.;  ///< `Pressure angle` (degrees)
+    double       addendum = -1.;        ///< `Addendum` (mm; negative: 1 module)
+    double       dedendum = -1.;        ///< `Dedendum` (mm; negative: 1.25 module)
+
+    /** Read the entries from the current subsection of @p prm. */
+    void parse(const dealii::ParameterHandler &prm);
+  };
 
   /**
    * The ToothProportions of the entries `Addendum`, `Dedendum` (negative: the module-based

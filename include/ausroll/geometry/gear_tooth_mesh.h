@@ -20,6 +20,7 @@
  */
 #pragma once
 
+#include <ausroll/geometry/gear_entries.h>
 #include <ausroll/geometry/involute_gear.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -45,24 +46,21 @@ namespace ausroll::geometry
    */
   struct GearToothParameters
   {
-    unsigned int n_teeth = 31;          ///< `Number of teeth` z of the whole gear
-    double       diametral_pitch = 8.5; ///< `Diametral pitch` (teeth per inch; 0: use Module)
-    double       module = 0.;           ///< `Module` m (mm), when Diametral pitch = 0
-    double       pressure_angle = 22.;  ///< `Pressure angle` (degrees)
-    double       addendum = -1.;        ///< `Addendum` (mm; negative: 1 module)
-    double       dedendum = -1.;        ///< `Dedendum` (mm; negative: 1.25 module)
-    double tooth_thickness = -1.;   ///< `Tooth thickness` at the pitch circle (mm; < 0: half pitch)
-    double root_fillet_radius = 0.; ///< `Root fillet radius` (mm)
-    double rim_thickness = -1.;    ///< `Rim thickness` below the root circle (mm; < 0: whole depth)
-    double tooth_axis_angle = 90.; ///< `Tooth axis angle` of the middle of the sector (deg)
-    unsigned int teeth = 1;        ///< `Teeth` in the meshed sector
-    bool         fix_root = false; ///< `Fix root`: side cuts get the inner arc's id 1
+    /** The gear size entries (`Number of teeth` z of the whole gear, `Diametral pitch`,
+        `Module`, `Pressure angle`, `Addendum`, `Dedendum`; gear_entries.h). */
+    GearSize size{31};
+    double   tooth_thickness = -1.; ///< `Tooth thickness` at the pitch circle (mm; < 0: half pitch)
+    double   root_fillet_radius = 0.; ///< `Root fillet radius` (mm)
+    double   rim_thickness = -1.; ///< `Rim thickness` below the root circle (mm; < 0: whole depth)
+    double   tooth_axis_angle = 90.; ///< `Tooth axis angle` of the middle of the sector (deg)
+    unsigned int teeth = 1;          ///< `Teeth` in the meshed sector
+    bool         fix_root = false;   ///< `Fix root`: side cuts get the inner arc's id 1
 
     /**
      * One more than the most `Teeth` a sector may have: half the gear (a sector is bounded by two
      * radial cuts; a whole gear has none and its manifolds fail).
      */
-    unsigned int max_sector_teeth() const { return n_teeth / 2 + 1; }
+    unsigned int max_sector_teeth() const { return size.teeth / 2 + 1; }
 
     /** Declare subsection `Gear tooth` (call inside subsection `Geometry`). */
     static void declare_parameters(dealii::ParameterHandler &prm);

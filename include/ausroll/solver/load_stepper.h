@@ -12,9 +12,11 @@
 #include <ausroll/solver/loading_parameters.h>
 #include <ausroll/solver/newton_solver.h>
 #include <ausroll/solver/stage_parameters.h>
+#include <ausroll/solver/step_control.h>
 
 #include <deal.II/base/conditional_ostream.h>
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -114,8 +116,8 @@ namespace ausroll::solver
    * RunFailure names the step, its time, the reason and where the last converged state is. The next
    * step size: `Step control = halving` keeps the size that worked after a cutback and grows by
    * `Step growth factor` (to at most the nominal step) otherwise; `adaptive` scales it by
-   * LoadingParameters::step_factor() of the Newton iterations and contact status changes (at most 1
-   * after a cutback).
+   * AdaptiveStepControl::step_factor() of the Newton iterations and contact status changes (at most
+   * 1 after a cutback); the rules are registered (solver/step_control.h).
    */
   class LoadStepper
   {
@@ -193,5 +195,7 @@ namespace ausroll::solver
     std::string                 output_directory;
     dealii::ConditionalOStream &log;
     dealii::ConditionalOStream &detail_log;
+    /** The rule of `Loading/Step control`. */
+    std::shared_ptr<const StepControl> step_control;
   };
 } // namespace ausroll::solver

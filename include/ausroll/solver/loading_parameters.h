@@ -6,6 +6,10 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <map>
+#include <memory>
+#include <string>
+
 namespace ausroll::solver
 {
   /** Initial guess of the Newton iteration of a load step (`Loading/Predictor`). */
@@ -15,12 +19,7 @@ namespace ausroll::solver
     linear_extrapolation ///< u_n + (dt / dt_prev) (u_n - u_n-1): follows the path of the last step
   };
 
-  /** How the load stepper chooses the next step size (`Loading/Step control`). */
-  enum class StepControl
-  {
-    halving, ///< halve after a failure; grow by the growth factor after every step without one
-    adaptive ///< also from the Newton iterations and contact status changes of the last step
-  };
+  class StepControlParameters;
 
   /**
    * Parameters of subsection `Loading`. Loads and prescribed motions are functions of the
@@ -28,32 +27,26 @@ namespace ausroll::solver
    */
   struct LoadingParameters
   {
-    /**
-     * Factor for the size of the step after a converged step that took @p newton_iterations
-     * Newton iterations and changed @p status_changes contact statuses (`Step control =
-     * adaptive`): shrink by target / actual (not below `Minimum step factor`) when either
-     * exceeds its target, grow by `Step growth factor` when the step was easy (at most half the
-     * target iterations and half the target status changes), keep the size otherwise.
-     */
-    double step_factor(const unsigned int newton_iterations,
-                       const unsigned int status_changes) const;
-
     static constexpr int max_steps = 1000000; ///< upper bound of `Number of steps`
     double               end_time = 1.;       ///< `End time`
     unsigned int number_of_steps = 10;     ///< `Number of steps` (nominal step = End time / steps)
     unsigned int max_cutbacks = 6;         ///< `Maximum cutbacks` per step (each halves the step)
     double       step_growth_factor = 1.5; ///< `Step growth factor` back towards the nominal step
-    Predictor    predictor = Predictor::none;         ///< `Predictor` of the first Newton iterate
-    StepControl  step_control = StepControl::halving; ///< `Step control`
-    unsigned int target_newton_iterations = 4;        ///< `Target Newton iterations` (adaptive)
-    unsigned int target_status_changes = 4;    ///< `Target status changes` (adaptive; 0: off)
-    double       minimum_step_factor = 0.25;   ///< `Minimum step factor`: smallest shrink per step
-    double       minimum_step_fraction = 1e-4; ///< `Minimum step fraction` of the nominal step
-    double       volume_change_limit = 0.2;    ///< `Volume change limit`: J outside [l, 1/l] folds
-    bool         stop_at_distortion = false;   ///< `Stop at distorted mesh`
+    Predictor    predictor = Predictor::none; ///< `Predictor` of the first Newton iterate
+    /** `Step control`: the name of a registered step control (solver/step_control.h). */
+    std::string step_control = "halving";
+    /** The entries of the step control's own subsection `Loading/<Step control>` (`Adaptive`);
+        set by parse_parameters(); null: the registered defaults of `step_control`. */
+    std::shared_ptr<const StepControlParameters> step_control_parameters;
+    double minimum_step_fraction = 1e-4; ///< `Minimum step fraction` of the nominal step
+    double volume_change_limit = 0.2;    ///< `Volume change limit`: J outside [l, 1/l] folds
+    bool   stop_at_distortion = false;   ///< `Stop at distorted mesh`
 
     /** Declare subsection `Loading`. */
     static void declare_parameters(dealii::ParameterHandler &prm);
+    /** The entries an old `.prm` file may still set and where they are now (old full path ->
+        new full path): the adaptive step control's entries moved into `Loading/Adaptive`. */
+    static std::map<std::string, std::string> moved_entries();
     /** Read subsection `Loading`. */
     void parse_parameters(dealii::ParameterHandler &prm);
   };

@@ -1,11 +1,22 @@
-#include <ausroll/contact/die_surface.h>
+#include <ausroll/contact/surfaces/chain_surface.h>
 #include <ausroll/contact/surfaces/circle.h>
 #include <ausroll/core/exceptions.h>
 #include <ausroll/core/parse_utilities.h>
+#include <ausroll/geometry/plane_vectors.h>
 
 namespace ausroll::contact::surfaces
 {
   using namespace dealii;
+  using namespace geometry::plane;
+
+  geometry::CurveChain
+  circle_chain(const Point<2> &center, const double radius, const bool material_inside)
+  {
+    return geometry::CurveChain(
+        {geometry::CurveSegment::arc(
+            center, radius, 0.0, material_inside ? -2.0 * M_PI : 2.0 * M_PI)},
+        true);
+  }
 
   void CircleParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -27,8 +38,7 @@ namespace ausroll::contact::surfaces
 
   std::unique_ptr<const RigidSurface<2>> CircleParameters::create(const std::string &) const
   {
-    return std::make_unique<ChainSurface>("circle",
-                                          DieSurface::circle(center, radius, material_inside));
+    return std::make_unique<ChainSurface>("circle", circle_chain(center, radius, material_inside));
   }
 } // namespace ausroll::contact::surfaces
 

@@ -70,16 +70,13 @@ namespace ausroll::contact::surfaces
                       "0 < alpha < 90).");
   }
 
-  void ConeParameters::parse(ParameterHandler  &prm,
-                             const std::string &subsection_path,
-                             const std::string &)
+  void ConeParameters::parse(ParameterHandler &prm, const std::string &path, const std::string &)
   {
-    path = subsection_path;
     parse_placement(prm, "Apex", path, apex, axis, reference);
     half_angle = prm.get_double("Half angle");
   }
 
-  std::unique_ptr<const RigidSurface<3>> ConeParameters::create(const std::string &) const
+  std::unique_ptr<const RigidSurface<3>> ConeParameters::create(const std::string &path) const
   {
     return with_path(
         path,

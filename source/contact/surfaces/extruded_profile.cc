@@ -10,13 +10,13 @@ namespace ausroll::contact::surfaces
 {
   using namespace dealii;
 
-  ExtrudedProfile::ExtrudedProfile(const DieSurface   &profile,
-                                   const double        z0,
-                                   const double        z1,
-                                   const bool          caps,
-                                   const Point<3>     &origin,
-                                   const Tensor<1, 3> &axis,
-                                   const Tensor<1, 3> &reference)
+  ExtrudedProfile::ExtrudedProfile(const geometry::CurveChain &profile,
+                                   const double                z0,
+                                   const double                z1,
+                                   const bool                  caps,
+                                   const Point<3>             &origin,
+                                   const Tensor<1, 3>         &axis,
+                                   const Tensor<1, 3>         &reference)
       : chain(profile)
       , z_lo(z0)
       , z_hi(z1)
@@ -35,13 +35,13 @@ namespace ausroll::contact::surfaces
     const double   z = xi[2], zc = std::clamp(z, z_lo, z_hi);
     // With caps a point inside the prism may be near a cap and far from the mantle: the full 2D
     // projection is needed to know whether (x, y) lies on the material side.
-    const Projection q = chain.project(
+    const SurfaceProjection<2> q = chain.project(
         Point<2>(xi[0], xi[1]), with_caps ? std::numeric_limits<double>::infinity() : max_distance);
     if (!q.valid)
       return SurfaceProjection<3>();
 
     const Tensor<1, 3> n2({q.normal[0], q.normal[1], 0.});
-    const Tensor<1, 3> t2({q.tangent[0], q.tangent[1], 0.});
+    const Tensor<1, 3> t2({q.tangents[0][0], q.tangents[0][1], 0.});
     Tensor<1, 3>       e3;
     e3[2] = 1.;
     // signed axial distance to [z0, z1] (> 0 beyond an end, <= 0 within) and the nearer end
@@ -49,7 +49,7 @@ namespace ausroll::contact::surfaces
     const double sz = z - z_hi > z_lo - z ? 1. : -1.;
 
     SurfaceProjection<3> p;
-    p.coordinates = {{zc, q.s}};
+    p.coordinates = {{zc, q.coordinates[0]}};
     p.curvatures = {{0., 0.}};
     // the rims: the ends of the profile's outline and, without caps, the ends of the extrusion
     p.end_margin = with_caps ? q.end_margin : std::min({q.end_margin, z - z_lo, z_hi - z});
@@ -59,8 +59,8 @@ namespace ausroll::contact::surfaces
       p.normal = n2;
       p.gap = q.gap;
       p.tangents = {{e3, t2}};
-      p.curvatures = {{0., q.curvature}};
-      p.at_edge = q.at_corner || q.at_end;
+      p.curvatures = {{0., q.curvatures[0]}};
+      p.at_edge = q.at_edge || q.at_end;
       p.at_end = q.at_end;
     };
     auto on_cap = [&]()
@@ -145,10 +145,9 @@ namespace ausroll::contact::surfaces
   }
 
   void ExtrudedProfileParameters::parse(ParameterHandler  &prm,
-                                        const std::string &subsection_path,
+                                        const std::string &path,
                                         const std::string &input_directory)
   {
-    path = subsection_path;
     parse_placement(prm, "Origin", path, origin, axis, reference);
     const std::string e = prm.get("Extent");
     extent = e == "infinite" ? Extent::infinite
@@ -162,11 +161,11 @@ namespace ausroll::contact::surfaces
   }
 
   std::unique_ptr<const RigidSurface<3>>
-  ExtrudedProfileParameters::create(const std::string &) const
+  ExtrudedProfileParameters::create(const std::string &path) const
   {
-    const DieSurface chain = profile.create();
-    const double     inf = std::numeric_limits<double>::infinity();
-    const bool       finite = extent != Extent::infinite;
+    const geometry::CurveChain chain = profile.create();
+    const double               inf = std::numeric_limits<double>::infinity();
+    const bool                 finite = extent != Extent::infinite;
     return with_path(path,
                      [&]() -> std::unique_ptr<const RigidSurface<3>>
                      {

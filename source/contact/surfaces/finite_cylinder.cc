@@ -135,18 +135,16 @@ namespace ausroll::contact::surfaces
                       "min(Radius, Width / 2)).");
   }
 
-  void CylinderParameters::parse(ParameterHandler  &prm,
-                                 const std::string &subsection_path,
-                                 const std::string &)
+  void
+  CylinderParameters::parse(ParameterHandler &prm, const std::string &path, const std::string &)
   {
-    path = subsection_path;
     parse_placement(prm, "Center", path, center, axis, reference);
     radius = prm.get_double("Radius");
     width = prm.get_double("Width");
     edge_radius = prm.get_double("Edge radius");
   }
 
-  std::unique_ptr<const RigidSurface<3>> CylinderParameters::create(const std::string &) const
+  std::unique_ptr<const RigidSurface<3>> CylinderParameters::create(const std::string &path) const
   {
     return with_path(path,
                      [&]() -> std::unique_ptr<const RigidSurface<3>> {

@@ -102,11 +102,8 @@ namespace ausroll::contact::surfaces
                       "Half length of the rectangle along t_2 = n x t_1 (mm; 0: infinite).");
   }
 
-  void PlaneParameters::parse(ParameterHandler  &prm,
-                              const std::string &subsection_path,
-                              const std::string &)
+  void PlaneParameters::parse(ParameterHandler &prm, const std::string &path, const std::string &)
   {
-    path = subsection_path;
     point = parse_point<3>(prm.get("Point"), path + "Point");
     normal = get_direction(prm, "Normal", path + "Normal");
     first_tangent = get_vector(prm, "First tangent", path + "First tangent");

@@ -1,4 +1,5 @@
 #include <ausroll/contact/surfaces/arc_line.h>
+#include <ausroll/contact/surfaces/chain_surface.h>
 #include <ausroll/contact/surfaces/polyline.h>
 #include <ausroll/contact/surfaces/profile_parameters.h>
 #include <ausroll/core/exceptions.h>
@@ -45,7 +46,7 @@ namespace ausroll::contact::surfaces
     prm.leave_subsection();
   }
 
-  DieSurface ProfileParameters::create() const
+  geometry::CurveChain ProfileParameters::create() const
   {
     const std::string shape_path = ShapeRegistry<2>::instance().path(type, path);
     const auto *const polyline = dynamic_cast<const PolylineParameters *>(shape.get());
@@ -59,8 +60,8 @@ namespace ausroll::contact::surfaces
       try
       {
         if (polyline != nullptr)
-          return DieSurface::polyline(points, closed, extend_ends);
-        return DieSurface::arc_line_composite(points, arc_line->fillet_radii, closed, extend_ends);
+          return polyline_chain(points, closed, extend_ends);
+        return arc_line_chain(points, arc_line->fillet_radii, closed, extend_ends);
       }
       catch (const EntryError &e)
       {

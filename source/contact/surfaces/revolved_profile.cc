@@ -11,17 +11,17 @@ namespace ausroll::contact::surfaces
 {
   using namespace dealii;
 
-  RevolvedProfile::RevolvedProfile(const DieSurface   &profile,
-                                   const Point<3>     &center,
-                                   const Tensor<1, 3> &axis,
-                                   const Tensor<1, 3> &reference)
+  RevolvedProfile::RevolvedProfile(const geometry::CurveChain &profile,
+                                   const Point<3>             &center,
+                                   const Tensor<1, 3>         &axis,
+                                   const Tensor<1, 3>         &reference)
       : chain(profile)
       , frame(center, axis, reference)
   {
     double size = 0.;
     for (unsigned int i = 0; i < chain.n_segments(); ++i)
     {
-      const DieSegment &seg = chain.segment(i);
+      const geometry::CurveSegment &seg = chain.segment(i);
       if (!seg.is_bounded())
       {
         // an infinite line must run parallel to the axis at r >= 0
@@ -48,8 +48,8 @@ namespace ausroll::contact::surfaces
       if (chain.segment(i).is_bounded() && chain.segment(i).bounding_box_min()[0] < -axis_tolerance)
       {
         // the bounding box of an arc is that of its points: check finely
-        const DieSegment  &seg = chain.segment(i);
-        const unsigned int n = 64;
+        const geometry::CurveSegment &seg = chain.segment(i);
+        const unsigned int            n = 64;
         for (unsigned int k = 0; k <= n; ++k)
           if (seg.point(seg.u_begin() + seg.length() * k / n)[0] < -axis_tolerance)
             throw EntryError("Profile/Points",
@@ -60,28 +60,29 @@ namespace ausroll::contact::surfaces
 
   SurfaceProjection<3> RevolvedProfile::project(const Point<3> &x, const double max_distance) const
   {
-    const Point<3>   xi = frame.to_canonical(x);
-    const Projection q = chain.project(Point<2>(std::hypot(xi[0], xi[1]), xi[2]), max_distance);
+    const Point<3>             xi = frame.to_canonical(x);
+    const SurfaceProjection<2> q
+        = chain.project(Point<2>(std::hypot(xi[0], xi[1]), xi[2]), max_distance);
     if (!q.valid)
       return SurfaceProjection<3>();
     MeridianProjection m;
     m.point = q.point;
     m.normal = q.normal;
     m.gap = q.gap;
-    m.curvature = q.curvature;
-    m.s = q.s;
-    m.at_edge = q.at_corner;
+    m.curvature = q.curvatures[0];
+    m.s = q.coordinates[0];
+    m.at_edge = q.at_edge;
     m.at_end = q.at_end;
     // an end of the profile on the axis is no rim of the surface
-    m.end_margin = chain.outline_margin(q.s, rim_at_start, rim_at_end);
+    m.end_margin = chain.outline_margin(q.coordinates[0], rim_at_start, rim_at_end);
     if (q.at_end && std::abs(q.point[0]) <= axis_tolerance)
     {
       // an end on the axis: a smooth point if the profile meets the axis at a right angle (a face
       // through the axis), else a vertex (an edge)
-      const bool         first = q.s <= chain.s_begin() + axis_tolerance;
-      const DieSegment  &seg = chain.segment(first ? 0 : chain.n_segments() - 1);
-      const double       u = first ? seg.u_begin() : seg.u_end();
-      const Tensor<1, 2> n = seg.normal(u);
+      const bool                    first = q.coordinates[0] <= chain.s_begin() + axis_tolerance;
+      const geometry::CurveSegment &seg = chain.segment(first ? 0 : chain.n_segments() - 1);
+      const double                  u = first ? seg.u_begin() : seg.u_end();
+      const Tensor<1, 2>            n = seg.normal(u);
       m.at_end = false;
       m.at_edge = std::abs(n[0]) > 1e-10;
       if (!m.at_edge)
@@ -119,18 +120,17 @@ namespace ausroll::contact::surfaces
   }
 
   void RevolvedProfileParameters::parse(ParameterHandler  &prm,
-                                        const std::string &subsection_path,
+                                        const std::string &path,
                                         const std::string &input_directory)
   {
-    path = subsection_path;
     parse_placement(prm, "Center", path, center, axis, reference);
     profile.parse_parameters(prm, path, input_directory);
   }
 
   std::unique_ptr<const RigidSurface<3>>
-  RevolvedProfileParameters::create(const std::string &) const
+  RevolvedProfileParameters::create(const std::string &path) const
   {
-    const DieSurface chain = profile.create();
+    const geometry::CurveChain chain = profile.create();
     return with_path(path,
                      [&]() -> std::unique_ptr<const RigidSurface<3>>
                      { return std::make_unique<RevolvedProfile>(chain, center, axis, reference); });

@@ -81,17 +81,14 @@ namespace ausroll::contact::surfaces
                       "rho: radius of the face profile circle (mm), 0 < rho < R.");
   }
 
-  void TorusParameters::parse(ParameterHandler  &prm,
-                              const std::string &subsection_path,
-                              const std::string &)
+  void TorusParameters::parse(ParameterHandler &prm, const std::string &path, const std::string &)
   {
-    path = subsection_path;
     parse_placement(prm, "Center", path, center, axis, reference);
     major_radius = prm.get_double("Major radius");
     minor_radius = prm.get_double("Minor radius");
   }
 
-  std::unique_ptr<const RigidSurface<3>> TorusParameters::create(const std::string &) const
+  std::unique_ptr<const RigidSurface<3>> TorusParameters::create(const std::string &path) const
   {
     return with_path(
         path,

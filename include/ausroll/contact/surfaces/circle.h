@@ -5,13 +5,14 @@
 #pragma once
 
 #include <ausroll/contact/surfaces/surface_factory.h>
+#include <ausroll/geometry/curve_chain.h>
 
 #include <deal.II/base/point.h>
 
 namespace ausroll::contact::surfaces
 {
   /**
-   * Subsection `Circle`: full circle (`Center`, `Radius`), a DieSurface::circle() chain: with
+   * Subsection `Circle`: full circle (`Center`, `Radius`), a circle_chain(): with
    * `Material inside` (a roll or punch) travelled clockwise with the normal outward, otherwise
    * (a hole) counter-clockwise with the normal towards the centre; s = 0 at centre + (r, 0).
    */
@@ -28,4 +29,14 @@ namespace ausroll::contact::surfaces
                                                  const std::string        &input_directory) override;
     std::unique_ptr<const RigidSurface<2>> create(const std::string &path) const override;
   };
+
+  /**
+   * Full circle with @p center and @p radius, s = 0 at center + (radius, 0). With
+   * @p material_inside (default; a die roll or round punch) it is travelled clockwise and the
+   * normal points outward; otherwise (a round hole, concave) counter-clockwise with the normal
+   * towards the centre.
+   */
+  geometry::CurveChain
+  circle_chain(const dealii::Point<2> &center, double radius, bool material_inside = true);
+
 } // namespace ausroll::contact::surfaces

@@ -61,7 +61,6 @@ namespace ausroll::contact::surfaces
     dealii::Tensor<1, 3> axis;             ///< `Axis` (from the apex into the die material)
     dealii::Tensor<1, 3> reference;        ///< `Reference direction` (theta = 0)
     double               half_angle = 45.; ///< `Half angle` alpha (degrees)
-    std::string          path;             ///< full path of the subsection (set by parse())
 
     /** Declare the entries of the subsection (the caller has entered it). */
     static void                            declare_parameters(dealii::ParameterHandler &prm);

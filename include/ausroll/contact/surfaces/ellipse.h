@@ -17,12 +17,12 @@ namespace ausroll::contact::surfaces
    * The ellipse x(phi) = c + R(alpha) (a cos phi, b sin phi) (R the rotation by alpha, phi the
    * parametric angle) as a closed rigid surface.
    *
-   * Orientation as DieSurface::circle(): with the material inside (an oval roll or punch) it is
+   * Orientation as circle_chain(): with the material inside (an oval roll or punch) it is
    * travelled clockwise and the normal points out of the ellipse, curvature > 0; with the
    * material outside (a hole) counter-clockwise, the normal towards the centre, curvature < 0.
    * The surface coordinate is the arc length s from the end of the a axis, c + R(alpha)(a, 0),
    * in the direction of travel, in [0, L) (L the perimeter, the coordinate period). For a = b it
-   * is DieSurface::circle(c, a) rotated by alpha.
+   * is circle_chain(c, a) rotated by alpha.
    *
    * Projection: by symmetry the point is reflected into the first quadrant of the ellipse's own
    * frame; the closest point there is x_i = e_i^2 y_i / (t + e_i^2) (e_0 >= e_1 the semi-axes,

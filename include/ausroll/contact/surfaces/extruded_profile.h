@@ -1,8 +1,8 @@
 /**
  * @file extruded_profile.h
- * 3D rigid surface: a 2D DieSurface chain in the canonical (x, y) plane extruded along z, over
- * z in [z0, z1] (finite, optionally with flat end caps) or infinitely (a spur-gear die from
- * DieSurface::involute_gear, a straight-knurl roll, a flat die of finite width).
+ * 3D rigid surface: a 2D curve chain (geometry::CurveChain) in the canonical (x, y) plane extruded
+ * along z, over z in [z0, z1] (finite, optionally with flat end caps) or infinitely (a spur-gear
+ * die from involute_gear_chain(), a straight-knurl roll, a flat die of finite width).
  *
  * Conventions (in addition to rigid_surface.h), canonical frame (e1, e2, e3 = extrusion axis):
  * - Mantle: x_proj = (p, z) with p the chain's projection of (x, y); n = (n_2D, 0);
@@ -22,11 +22,11 @@
  */
 #pragma once
 
-#include <ausroll/contact/die_surface.h>
 #include <ausroll/contact/rigid_surface.h>
 #include <ausroll/contact/surfaces/frame_3d.h>
 #include <ausroll/contact/surfaces/profile_parameters.h>
 #include <ausroll/contact/surfaces/surface_factory.h>
+#include <ausroll/geometry/curve_chain.h>
 
 #include <limits>
 
@@ -42,7 +42,7 @@ namespace ausroll::contact::surfaces
      * faces. @p origin, @p axis (e3) and @p reference (e1, the profile's x direction; zero: chosen)
      * place the canonical frame. Throws EntryError for z0 >= z1 or caps on an infinite end.
      */
-    ExtrudedProfile(const DieSurface           &profile,
+    ExtrudedProfile(const geometry::CurveChain &profile,
                     double                      z0 = -std::numeric_limits<double>::infinity(),
                     double                      z1 = std::numeric_limits<double>::infinity(),
                     bool                        caps = false,
@@ -57,7 +57,7 @@ namespace ausroll::contact::surfaces
                                  = std::numeric_limits<double>::infinity()) const override;
 
     /** The mantle point with coordinates (z, s): the profile point at s (wrapped or clamped as
-     * DieSurface::point_at()) at z clamped to [z0, z1]. The end caps are not reached (their
+     * CurveChain::point_at()) at z clamped to [z0, z1]. The end caps are not reached (their
      * coordinates are not unique). */
     dealii::Point<3> point_at(const std::array<double, 2> &coordinates) const override;
 
@@ -65,13 +65,13 @@ namespace ausroll::contact::surfaces
     std::array<double, 2> coordinate_periods() const override;
 
     /** The profile chain. */
-    const DieSurface &profile() const { return chain; }
+    const geometry::CurveChain &profile() const { return chain; }
 
   private:
-    DieSurface chain;
-    double     z_lo, z_hi;
-    bool       with_caps;
-    Frame3D    frame;
+    geometry::CurveChain chain;
+    double               z_lo, z_hi;
+    bool                 with_caps;
+    Frame3D              frame;
   };
 
   /** Subsection `Extruded profile`. */
@@ -91,7 +91,6 @@ namespace ausroll::contact::surfaces
     double               z0 = 0.;                   ///< `Start z`
     double               z1 = 1.;                   ///< `End z`
     ProfileParameters    profile;                   ///< subsection `Profile`, coordinates (x, y)
-    std::string          path; ///< full path of the subsection (set by parse())
 
     /** Declare the entries of the subsection (the caller has entered it). */
     static void                            declare_parameters(dealii::ParameterHandler &prm);

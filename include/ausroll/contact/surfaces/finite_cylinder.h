@@ -77,7 +77,6 @@ namespace ausroll::contact::surfaces
     double               radius = 1.;      ///< `Radius`
     double               width = 1.;       ///< `Width`
     double               edge_radius = 0.; ///< `Edge radius`
-    std::string          path;             ///< full path of the subsection (set by parse())
 
     /** Declare the entries of the subsection (the caller has entered it). */
     static void                            declare_parameters(dealii::ParameterHandler &prm);

@@ -9,7 +9,8 @@
  * shape's canonical frame (e1, e2, e3 = axis) with cylindrical coordinates (r, theta, z),
  * x = r (cos theta e1 + sin theta e2) + z e3:
  * - The meridian profile lives in the half plane (r >= 0, z); its 2D normal (n_r, n_z) and
- *   direction of travel t_m = (n_z, -n_r) follow the DieSurface convention (material on the right).
+ *   direction of travel t_m = (n_z, -n_r) follow the geometry::CurveChain convention (material on
+ * the right).
  * - n = n_r e_r + n_z e3; t_1 = t_m,r e_r + t_m,z e3 (along the profile, direction of travel);
  *   t_2 = e_theta = e3 x e_r (circumferential); then t_1 x t_2 = n.
  * - Surface coordinates (s, theta): s the arc length along the profile, theta in (-pi, pi] from e1.

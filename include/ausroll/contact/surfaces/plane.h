@@ -67,7 +67,6 @@ namespace ausroll::contact::surfaces
     dealii::Tensor<1, 3> first_tangent;      ///< `First tangent` (zero: chosen)
     double               half_length_1 = 0.; ///< `Half length 1` (0: infinite)
     double               half_length_2 = 0.; ///< `Half length 2` (0: infinite)
-    std::string          path;               ///< full path of the subsection (set by parse())
 
     /** Declare the entries of the subsection (the caller has entered it). */
     static void                            declare_parameters(dealii::ParameterHandler &prm);

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <ausroll/contact/surfaces/surface_factory.h>
+#include <ausroll/geometry/curve_chain.h>
 
 #include <deal.II/base/point.h>
 
@@ -35,7 +36,7 @@ namespace ausroll::contact::surfaces
   };
 
   /**
-   * Subsection `Polyline`: an open DieSurface::polyline() chain through the points in travel
+   * Subsection `Polyline`: an open polyline_chain() through the points in travel
    * order (die material on the right), its first and last segment extended to infinity.
    */
   struct PolylineParameters : public ShapeParameters<2>
@@ -49,4 +50,25 @@ namespace ausroll::contact::surfaces
                                                  const std::string        &input_directory) override;
     std::unique_ptr<const RigidSurface<2>> create(const std::string &path) const override;
   };
+
+  /**
+   * Chain of straight segments through @p points (at least 2 distinct points; consecutive
+   * duplicates are dropped). @p closed joins the last point to the first; @p extend_ends
+   * (open chains only) extends the first and the last segment to infinity.
+   */
+  geometry::CurveChain polyline_chain(const std::vector<dealii::Point<2>> &points,
+                                      bool                                 closed = false,
+                                      bool                                 extend_ends = false);
+
+  /**
+   * Read a points file: plain text with two columns x y per line; everything after '#' is a
+   * comment; blank lines are ignored. Throws ausroll::InputError (a std::runtime_error) naming
+   * @p filename if the file cannot be read, a line is malformed, or it holds fewer than 2 points.
+   */
+  std::vector<dealii::Point<2>> read_points_file(const std::string &filename);
+
+  /** Open polyline die from a points file (see read_points_file() and polyline_chain()). */
+  geometry::CurveChain polyline_chain_from_file(const std::string &filename,
+                                                bool               extend_ends = false);
+
 } // namespace ausroll::contact::surfaces

@@ -5,8 +5,8 @@
  */
 #pragma once
 
-#include <ausroll/contact/die_surface.h>
 #include <ausroll/contact/surfaces/surface_factory.h>
+#include <ausroll/geometry/curve_chain.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -41,7 +41,7 @@ namespace ausroll::contact::surfaces
                           const std::string        &parent_path,
                           const std::string        &input_directory);
     /** Build the chain; InputError naming the entry if it cannot be built. */
-    DieSurface create() const;
+    geometry::CurveChain create() const;
   };
 
 } // namespace ausroll::contact::surfaces

@@ -1,6 +1,7 @@
 /**
  * @file revolved_profile.h
- * 3D rigid surface: the surface of revolution of a 2D DieSurface chain about the canonical z axis.
+ * 3D rigid surface: the surface of revolution of a 2D curve chain (geometry::CurveChain) about the
+ * canonical z axis.
  *
  * Conventions (in addition to rigid_surface.h and the surface-of-revolution block of
  * frame_3d.h): the chain is given in the meridian half plane with 2D coordinates (r, z) (its
@@ -18,11 +19,11 @@
  */
 #pragma once
 
-#include <ausroll/contact/die_surface.h>
 #include <ausroll/contact/rigid_surface.h>
 #include <ausroll/contact/surfaces/frame_3d.h>
 #include <ausroll/contact/surfaces/profile_parameters.h>
 #include <ausroll/contact/surfaces/surface_factory.h>
+#include <ausroll/geometry/curve_chain.h>
 
 namespace ausroll::contact::surfaces
 {
@@ -35,7 +36,7 @@ namespace ausroll::contact::surfaces
      * @p reference fixes theta = 0 (zero: chosen). Throws EntryError("Profile/Points", ...) if the
      * chain reaches r < 0 (an infinite line must run parallel to the axis).
      */
-    RevolvedProfile(const DieSurface           &profile,
+    RevolvedProfile(const geometry::CurveChain &profile,
                     const dealii::Point<3>     &center = dealii::Point<3>(),
                     const dealii::Tensor<1, 3> &axis = dealii::Tensor<1, 3>({0., 0., 1.}),
                     const dealii::Tensor<1, 3> &reference = dealii::Tensor<1, 3>());
@@ -47,7 +48,7 @@ namespace ausroll::contact::surfaces
                                  = std::numeric_limits<double>::infinity()) const override;
 
     /** The surface point with coordinates (s, theta): the profile point at s
-     * (DieSurface::point_at(): wrapped on a closed profile, clamped on an open one) revolved by
+     * (CurveChain::point_at(): wrapped on a closed profile, clamped on an open one) revolved by
      * theta. */
     dealii::Point<3> point_at(const std::array<double, 2> &coordinates) const override;
 
@@ -55,12 +56,12 @@ namespace ausroll::contact::surfaces
     std::array<double, 2> coordinate_periods() const override;
 
     /** The profile chain. */
-    const DieSurface &profile() const { return chain; }
+    const geometry::CurveChain &profile() const { return chain; }
 
   private:
-    DieSurface chain;
-    Frame3D    frame;
-    double     axis_tolerance; ///< a profile point with r below it lies on the axis
+    geometry::CurveChain chain;
+    Frame3D              frame;
+    double               axis_tolerance; ///< a profile point with r below it lies on the axis
     /** Whether the start / the end of the profile's outline is a rim of the surface (not on the
         axis, not at infinity). */
     bool rim_at_start = false, rim_at_end = false;
@@ -73,7 +74,6 @@ namespace ausroll::contact::surfaces
     dealii::Tensor<1, 3> axis;      ///< `Axis`
     dealii::Tensor<1, 3> reference; ///< `Reference direction` (theta = 0)
     ProfileParameters    profile;   ///< subsection `Profile`, coordinates (r, z)
-    std::string          path;      ///< full path of the subsection (set by parse())
 
     /** Declare the entries of the subsection (the caller has entered it). */
     static void                            declare_parameters(dealii::ParameterHandler &prm);

@@ -6,7 +6,7 @@
  * Conventions (in addition to rigid_surface.h and the surface-of-revolution block of
  * frame_3d.h): canonical frame (e1, e2, e3 = axis) at the centre; the tube is the set
  * (r - R)^2 + z^2 <= rho^2, 0 < rho < R. The meridian profile is the circle of centre (R, 0) and
- * radius rho travelled clockwise (as DieSurface::circle): with phi the polar angle of the normal
+ * radius rho travelled clockwise (as circle_chain()): with phi the polar angle of the normal
  * in the (r, z) plane, n = cos phi e_r + sin phi e3,
  * - s = rho (-phi) wrapped into [0, 2 pi rho): s = 0 at the outermost circle r = R + rho, then
  *   downwards (t_1 = sin phi e_r - cos phi e3; t_2 = e_theta);
@@ -73,7 +73,6 @@ namespace ausroll::contact::surfaces
     dealii::Tensor<1, 3> reference;         ///< `Reference direction` (theta = 0)
     double               major_radius = 2.; ///< `Major radius` R
     double               minor_radius = 1.; ///< `Minor radius` rho (face profile radius)
-    std::string          path;              ///< full path of the subsection (set by parse())
 
     /** Declare the entries of the subsection (the caller has entered it). */
     static void                            declare_parameters(dealii::ParameterHandler &prm);
