@@ -7,6 +7,11 @@
  * exponential, with and without derivative, polar decomposition) on 64 symmetric positive definite
  * tensors (a third of them with two equal eigenvalues), general and with x_3 principal (plane).
  *
+ * A third table gives the cost of the metallurgy: every kinematics wrapped with the thermal strain
+ * and the phases (PhaseTransformationModel) while martensite forms at 60 C, without TRIP (the
+ * default), with TRIP (`Phases/TRIP coefficient`) and with TRIP and the mixture rule of the yield
+ * stress, against the isothermal model.
+ *
  * Usage: material_point_cost [n_evaluations = 100000]
  *
  * Times are CPU times of the process (clock_gettime(CLOCK_PROCESS_CPUTIME_ID)), not wall times,
@@ -17,7 +22,9 @@
  */
 #include <ausroll/material/constitutive_model.h>
 #include <ausroll/material/material_point.h>
+#include <ausroll/material/phase_transformation_model.h>
 #include <ausroll/material/tensor_functions.h>
+#include <ausroll/material/thermal_expansion_model.h>
 
 #include <algorithm>
 #include <atomic>
@@ -202,6 +209,56 @@ namespace
           return R[0][1] + U[0][0];
         });
   }
+
+  /** The metallurgy table (see the file comment). */
+  void time_phases(const int n, const MaterialParameters &steel)
+  {
+    ThermalExpansionParameters thermal;
+    thermal.expansion = PropertyTable(1.2e-5);
+    PhaseParameters off;
+    off.enabled = true;
+    PhaseParameters trip = off;
+    trip.mechanics.trip_coefficient = 5e-5;
+    PhaseParameters mixture = trip;
+    mixture.mechanics.martensite_yield_stress = PropertyTable(1400.);
+    mixture.mechanics.martensite_yield_given = true;
+    std::printf("\nCPU ns per evaluation with stress and tangent, martensite forming at 60 C "
+                "(0.8 wt%% C; best of 3 x %d)\n",
+                n);
+    std::printf("%-20s %-8s %14s %14s %14s %14s\n",
+                "kinematics",
+                "step",
+                "isothermal",
+                "phases",
+                "phases+TRIP",
+                "TRIP+mixture");
+    for (const KinematicsType kin : {KinematicsType::small_strain,
+                                     KinematicsType::total_lagrangian,
+                                     KinematicsType::updated_lagrangian,
+                                     KinematicsType::finite_strain})
+    {
+      const auto    isothermal = create_constitutive_model(kin, steel, false);
+      const auto    phases = create_constitutive_model(kin, steel, false, &thermal, &off);
+      const auto    with_trip = create_constitutive_model(kin, steel, false, &thermal, &trip);
+      const auto    with_mixture = create_constitutive_model(kin, steel, false, &thermal, &mixture);
+      MaterialState old;
+      old.temperature = 60.;
+      old.carbon = 0.8;
+      old.martensite = 0.2;
+      const double       small = kin == KinematicsType::small_strain ? 0. : 1.;
+      const Tensor<2, 3> F_plastic = deformation(small * 0.05, 1.06, 0.97, 0.02);
+      const Tensor<2, 3> F_elastic = deformation(small * 0.05, 1.0004, 0.9998, 0.0001);
+      for (const auto &[name, F] :
+           {std::make_pair("elastic", F_elastic), std::make_pair("plastic", F_plastic)})
+        std::printf("%-20s %-8s %14.0f %14.0f %14.0f %14.0f\n",
+                    to_string(kin).c_str(),
+                    name,
+                    time_evaluations(*isothermal, old, F, true, n),
+                    time_evaluations(*phases, old, F, true, n),
+                    time_evaluations(*with_trip, old, F, true, n),
+                    time_evaluations(*with_mixture, old, F, true, n));
+    }
+  }
 } // namespace
 
 int main(int argc, char **argv)
@@ -263,5 +320,6 @@ int main(int argc, char **argv)
                   allocations);
     }
   time_tensor_functions(n);
+  time_phases(n, steel);
   return 0;
 }

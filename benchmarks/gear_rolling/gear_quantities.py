@@ -14,6 +14,9 @@ residual state after unloading) and prints key=value words:
                           plastic strain reaches --threshold (0.2 %), interpolated linearly along
                           the cell edges where it crosses the threshold, over the involute part
   plastic_max             largest nodal equivalent plastic strain
+  F_alpha, f_f_alpha,     ISO 1328-1 total, form and slope profile deviation (mm) of the last step
+  f_H_alpha               over the evaluation range L_alpha of scripts/gear_flank_analysis.py
+                          (its --sap-radius, --tip-chamfer-radius, --evaluation-fraction)
 and writes OUTPUT_DIR/residual_dn.csv (R, d_n of the last step, sorted by R) for a profile
 comparison (--profile "d_n=residual_dn.csv:R:d_n").
 """
@@ -80,6 +83,10 @@ def main():
     args = p.parse_args()
     results, rp = gfa.analyse(args)
     s = gfa.summary(results, rp)
+    rb, ra = gfa.gear_data(args)[1:3]
+    r0, r1 = gfa.evaluation_range([r for r in results if r[0] == s["step"]], rb, ra, args)
+    iso = gfa.iso_summary(gfa.iso1328([r for r in results if r[0] == s["step"]], rb, r0, r1)[s["step"]],
+                          rb, r0, r1)
     last = max(r[0] for r in results)
     final = sorted((r[2], r[4]) for r in results if r[0] == last)
     with open(os.path.join(args.directory, "residual_dn.csv"), "w", newline="") as f:
@@ -93,7 +100,8 @@ def main():
         p_n_max = max([p_n_max] + [float(r["p_n"]) for r in rows])
     print(f"d_n_min={s['d_n_min']:.8g} d_n_max={s['d_n_max']:.8g} "
           f"p_n_max={p_n_max:.8g} plastic_depth={depth:.8g} "
-          f"plastic_max={ep_max:.8g}")
+          f"plastic_max={ep_max:.8g} F_alpha={iso['F_alpha']:.8g} "
+          f"f_f_alpha={iso['f_f_alpha']:.8g} f_H_alpha={iso['f_H_alpha']:.8g}")
     return 0
 
 

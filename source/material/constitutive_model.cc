@@ -46,20 +46,26 @@ namespace ausroll::material
                             const ThermalExpansionParameters *thermal,
                             const PhaseParameters            *phases)
   {
+    // TRIP and the mixture rule of the yield stress act in the return map (`Phases` entries)
+    const TransformationPlasticityParameters *mechanics
+        = phases != nullptr ? &phases->mechanics : nullptr;
     std::unique_ptr<ConstitutiveModel> model;
     switch (kinematics)
     {
       case KinematicsType::small_strain:
-        model = std::make_unique<SmallStrainModel>(create_plasticity_model(material));
+        model = std::make_unique<SmallStrainModel>(create_plasticity_model(material, mechanics));
         break;
       case KinematicsType::total_lagrangian:
-        model = std::make_unique<TotalLagrangianModel>(create_plasticity_model(material));
+        model
+            = std::make_unique<TotalLagrangianModel>(create_plasticity_model(material, mechanics));
         break;
       case KinematicsType::updated_lagrangian:
-        model = std::make_unique<UpdatedLagrangianJaumannModel>(create_plasticity_model(material));
+        model = std::make_unique<UpdatedLagrangianJaumannModel>(
+            create_plasticity_model(material, mechanics));
         break;
       case KinematicsType::finite_strain:
-        model = std::make_unique<FiniteStrainLogModel>(create_plasticity_model(material));
+        model
+            = std::make_unique<FiniteStrainLogModel>(create_plasticity_model(material, mechanics));
         break;
     }
     if (!model)

@@ -56,8 +56,11 @@ namespace ausroll::material
       back_trial = rotate(dR, old.back_stress);
     }
 
-    const ReturnMappingResult r = stress_return->return_map(
-        tau_trial, back_trial, old.equivalent_plastic_strain, old.temperature);
+    const ReturnMappingResult    r = stress_return->return_map(tau_trial,
+                                                            back_trial,
+                                                            old.equivalent_plastic_strain,
+                                                            old.temperature,
+                                                            PhaseStep::of(old, state));
     const SymmetricTensor<2, 3> &tau = r.stress;
 
     const double       J = dealii::determinant(F);
@@ -68,7 +71,7 @@ namespace ausroll::material
     state.back_stress = r.back_stress;
     state.equivalent_plastic_strain = old.equivalent_plastic_strain + r.eq_plastic_strain_increment;
     state.deformation_gradient = F;
-    if (r.plastic)
+    if (r.plastic || r.trip)
     {
       // exponential map: b_e = exp(2 eps_e) with eps_e = eps_e^trial - Delta eps_p; output
       // ln(C_p) / 2 with C_p = F^T b_e^-1 F
@@ -177,8 +180,11 @@ namespace ausroll::material
   double FiniteStrainLogModel::yield_function(const MaterialState &state) const
   {
     const double J = dealii::determinant(state.deformation_gradient);
-    return stress_return->yield_function(
-        J * state.stress, state.back_stress, state.equivalent_plastic_strain, state.temperature);
+    return stress_return->yield_function(J * state.stress,
+                                         state.back_stress,
+                                         state.equivalent_plastic_strain,
+                                         state.temperature,
+                                         PhaseStep::at(state));
   }
 
   void FiniteStrainLogModel::make_admissible(MaterialState &state) const
@@ -187,7 +193,8 @@ namespace ausroll::material
     state.stress = stress_return->project_onto_yield_surface(J * state.stress,
                                                              state.back_stress,
                                                              state.equivalent_plastic_strain,
-                                                             state.temperature)
+                                                             state.temperature,
+                                                             PhaseStep::at(state))
                    / J;
   }
 } // namespace ausroll::material

@@ -10,30 +10,6 @@ namespace ausroll::material
 {
   using namespace dealii;
 
-  namespace
-  {
-    /** A function of the carbon content C (wt%), checked finite over 0 <= C <= 2.1. */
-    std::unique_ptr<FunctionParser<1>> carbon_function(const std::string &expression,
-                                                       const std::string &entry)
-    {
-      require_expression_length(expression, entry);
-      auto parser = std::make_unique<FunctionParser<1>>(1);
-      try
-      {
-        parser->initialize("C", expression, std::map<std::string, double>{});
-      }
-      catch (...)
-      {
-        throw InputError(entry + ": cannot parse '" + abbreviate(expression) + "' (variable: C)");
-      }
-      for (unsigned int i = 0; i <= 21; ++i)
-        if (!std::isfinite(parser->value(Point<1>(0.1 * i))))
-          throw InputError(entry + ": '" + abbreviate(expression)
-                           + "' is not finite at C = " + std::to_string(0.1 * i));
-      return parser;
-    }
-  } // namespace
-
   void PhaseParameters::declare_parameters(ParameterHandler &prm)
   {
     const PhaseParameters defaults;
@@ -48,8 +24,19 @@ namespace ausroll::material
     prm.declare_entry("Carbon content",
                       defaults.carbon_content,
                       Patterns::Anything(),
-                      "Carbon content in wt% (0 to 2.1), an expression of x, y (z in 3D): the "
-                      "carburized case, e.g. '0.2 + 0.8 * exp(-(50 - sqrt(x^2 + y^2)) / 0.8)'.");
+                      "Carbon content in wt% (0 to 2.1): an expression of x, y (z in 3D) and "
+                      "depth, the distance (mm) below the initial surface of the Case boundaries "
+                      "measured along its normal (exact on curved outlines: the involute flank, "
+                      "the circles), e.g. the carburized case '0.2 + 0.7 * erfc(depth / 0.6)'; or "
+                      "'file: NAME.csv', a table of two columns depth, C (depths increasing; "
+                      "linear between the rows, constant beyond them).");
+    prm.declare_entry("Case boundaries",
+                      "",
+                      Patterns::Anything(),
+                      "Boundary ids of the workpiece whose initial outline the depth of Carbon "
+                      "content is measured from (the carburized surface). Empty: the Candidate "
+                      "boundaries of all dies (the surface the dies roll); used only if the "
+                      "carbon content uses the depth.");
     prm.declare_entry("Martensite start temperature",
                       defaults.martensite_start,
                       Patterns::Anything(),
@@ -87,6 +74,7 @@ namespace ausroll::material
                       "Volume change austenite to bainite in per cent, an expression of C "
                       "(default lower bainite, 4.64 - 1.43 C; upper bainite 4.64 - 2.21 C: the "
                       "dilatometric relations of the ASM Handbook vol. 4, after Lement 1959).");
+    TransformationPlasticityParameters::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -98,20 +86,27 @@ namespace ausroll::material
     prm.enter_subsection("Phases");
     enabled = prm.get_bool("Enabled");
     carbon_content = prm.get("Carbon content");
+    case_boundaries = parse_unsigned_list(prm.get("Case boundaries"), "Phases/Case boundaries");
     martensite_start = prm.get("Martensite start temperature");
     koistinen_marburger = prm.get_double("Koistinen-Marburger coefficient");
     volume_change = prm.get("Transformation volume change");
     bainite_start = prm.get("Bainite start times");
     bainite_finish = prm.get("Bainite finish times");
     bainite_volume_change = prm.get("Bainite volume change");
+    mechanics.parse_parameters(prm, input_directory);
     prm.leave_subsection();
+    require(enabled || !mechanics.active(),
+            mechanics.trip_coefficient > 0.    ? "Phases/TRIP coefficient"
+            : mechanics.martensite_yield_given ? "Phases/Martensite yield stress"
+                                               : "Phases/Bainite yield stress",
+            "acts on the transformation: set Phases/Enabled = true");
     require(!enabled || thermal,
             "Phases/Enabled",
             "the transformation follows the temperature: set Thermal/Enabled = true");
     if (enabled)
     {
-      carbon_function(martensite_start, "Phases/Martensite start temperature");
-      carbon_function(volume_change, "Phases/Transformation volume change");
+      CarbonFunction(martensite_start, "Phases/Martensite start temperature");
+      CarbonFunction(volume_change, "Phases/Transformation volume change");
       require_expression_length(carbon_content, "Phases/Carbon content");
       const BainiteKinetics check(bainite_start,
                                   bainite_finish,
@@ -119,7 +114,7 @@ namespace ausroll::material
                                   "Phases/Bainite finish times",
                                   input_directory);
       if (check.active())
-        carbon_function(bainite_volume_change, "Phases/Bainite volume change");
+        CarbonFunction(bainite_volume_change, "Phases/Bainite volume change");
     }
   }
 
@@ -127,8 +122,8 @@ namespace ausroll::material
                                                      const PhaseParameters             &prm)
       : WrappedModel(std::move(model))
       , b(prm.koistinen_marburger)
-      , ms(carbon_function(prm.martensite_start, "Phases/Martensite start temperature"))
-      , dv(carbon_function(prm.volume_change, "Phases/Transformation volume change"))
+      , ms(prm.martensite_start, "Phases/Martensite start temperature")
+      , dv(prm.volume_change, "Phases/Transformation volume change")
       , bainite(prm.bainite_start,
                 prm.bainite_finish,
                 "Phases/Bainite start times",
@@ -136,12 +131,12 @@ namespace ausroll::material
                 prm.input_directory)
   {
     if (bainite.active())
-      dv_bainite = carbon_function(prm.bainite_volume_change, "Phases/Bainite volume change");
+      dv_bainite.emplace(prm.bainite_volume_change, "Phases/Bainite volume change");
   }
 
   double PhaseTransformationModel::martensite_start(const double C) const
   {
-    return ms->value(Point<1>(C));
+    return ms.value(C);
   }
 
   double PhaseTransformationModel::martensite_fraction(const double f_old,
@@ -172,9 +167,8 @@ namespace ausroll::material
                                                           const double f_b) const
   {
     if (f_b > 0.)
-      return std::cbrt(1. + f * dv->value(Point<1>(C)) / 100.
-                       + f_b * dv_bainite->value(Point<1>(C)) / 100.);
-    return f > 0. ? std::cbrt(1. + f * dv->value(Point<1>(C)) / 100.) : 1.;
+      return std::cbrt(1. + f * dv.value(C) / 100. + f_b * dv_bainite->value(C) / 100.);
+    return f > 0. ? std::cbrt(1. + f * dv.value(C) / 100.) : 1.;
   }
 
   void PhaseTransformationModel::evaluate(const Tensor<2, 3>  &F,
@@ -186,11 +180,12 @@ namespace ausroll::material
     const double f_b = bainite_fraction(old.bainite, old.martensite, old.temperature, step_length);
     const double f = martensite_fraction(old.martensite, old.carbon, old.temperature, f_b);
     const double theta = transformation_stretch(f, old.carbon, f_b);
-    inner->evaluate(remove_stretch(F, theta), old, state, P, tangent);
-    scale_response(P, tangent, theta);
+    // the fractions at the end of the step first: the inner return map reads them (TRIP, mixture)
     state.martensite = f;
     state.bainite = f_b;
     state.carbon = old.carbon;
+    inner->evaluate(remove_stretch(F, theta), old, state, P, tangent);
+    scale_response(P, tangent, theta);
   }
 
   void PhaseTransformationModel::rebase(MaterialState &state, const Tensor<2, 3> &F) const

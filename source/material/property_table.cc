@@ -39,6 +39,7 @@ namespace ausroll::material
     /** Rows "T, value" of a CSV file (a non-numeric first line is a header). */
     void read_csv_rows(const std::string   &file,
                        const std::string   &entry,
+                       const std::string   &argument,
                        std::vector<double> &t,
                        std::vector<double> &v)
     {
@@ -62,7 +63,7 @@ namespace ausroll::material
           continue;
         const std::string where = entry + " (" + file + ", line " + std::to_string(number) + ")";
         if (cells.size() != 2)
-          throw InputError(where + ": expected two columns 'temperature, value'");
+          throw InputError(where + ": expected two columns '" + argument + ", value'");
         char *end = nullptr;
         std::strtod(cells[0].c_str(), &end);
         if (t.empty() && number == 1 && *end != '\0')
@@ -77,7 +78,8 @@ namespace ausroll::material
                                      const std::string &entry,
                                      const std::string &input_directory,
                                      const bool         positive,
-                                     const bool         non_negative)
+                                     const bool         non_negative,
+                                     const std::string &argument)
   {
     PropertyTable table;
     table.temperatures.clear();
@@ -93,7 +95,7 @@ namespace ausroll::material
         throw InputError(entry + ": 'file:' needs a file name");
       const std::string path
           = (name[0] == '/' || input_directory.empty()) ? name : input_directory + "/" + name;
-      read_csv_rows(path, entry, table.temperatures, table.values);
+      read_csv_rows(path, entry, argument, table.temperatures, table.values);
       if (table.values.empty())
         throw InputError(entry + ": table file '" + path + "' has no rows");
     }
@@ -107,7 +109,7 @@ namespace ausroll::material
 
     for (unsigned int i = 1; i < table.temperatures.size(); ++i)
       if (!(table.temperatures[i] > table.temperatures[i - 1]))
-        throw InputError(entry + ": the temperatures of the table must increase strictly (row "
+        throw InputError(entry + ": the " + argument + "s of the table must increase strictly (row "
                          + std::to_string(i + 1) + ": " + std::to_string(table.temperatures[i])
                          + " after " + std::to_string(table.temperatures[i - 1]) + ")");
     for (const double v : table.values)

@@ -19,8 +19,11 @@ namespace ausroll::material
     const SymmetricTensor<2, 3> strain = dealii::symmetrize(F) - dealii::unit_symmetric_tensor<3>();
     const SymmetricTensor<2, 3> trial_stress
         = stress_return->elasticity(old.temperature).stress(strain - old.plastic_strain);
-    const ReturnMappingResult r = stress_return->return_map(
-        trial_stress, old.back_stress, old.equivalent_plastic_strain, old.temperature);
+    const ReturnMappingResult r = stress_return->return_map(trial_stress,
+                                                            old.back_stress,
+                                                            old.equivalent_plastic_strain,
+                                                            old.temperature,
+                                                            PhaseStep::of(old, state));
 
     state.stress = r.stress;
     state.plastic_strain = old.plastic_strain + r.plastic_strain_increment;

@@ -29,8 +29,11 @@ namespace ausroll::material
 
     const SymmetricTensor<2, 3> trial_stress
         = stress_return->elasticity(old.temperature).stress(E - old.plastic_strain);
-    const ReturnMappingResult r = stress_return->return_map(
-        trial_stress, old.back_stress, old.equivalent_plastic_strain, old.temperature);
+    const ReturnMappingResult    r = stress_return->return_map(trial_stress,
+                                                            old.back_stress,
+                                                            old.equivalent_plastic_strain,
+                                                            old.temperature,
+                                                            PhaseStep::of(old, state));
     const SymmetricTensor<2, 3> &S = r.stress;
 
     P = F * Tensor<2, 3>(S);
@@ -96,8 +99,11 @@ namespace ausroll::material
     const Tensor<2, 3>          F_inv = dealii::invert(F);
     const SymmetricTensor<2, 3> S = dealii::symmetrize(
         dealii::determinant(F) * F_inv * Tensor<2, 3>(state.stress) * dealii::transpose(F_inv));
-    return stress_return->yield_function(
-        S, state.back_stress, state.equivalent_plastic_strain, state.temperature);
+    return stress_return->yield_function(S,
+                                         state.back_stress,
+                                         state.equivalent_plastic_strain,
+                                         state.temperature,
+                                         PhaseStep::at(state));
   }
 
   void TotalLagrangianModel::make_admissible(MaterialState &state) const
@@ -107,8 +113,12 @@ namespace ausroll::material
     const Tensor<2, 3>          F_inv = dealii::invert(F);
     const SymmetricTensor<2, 3> S
         = dealii::symmetrize(J * F_inv * Tensor<2, 3>(state.stress) * dealii::transpose(F_inv));
-    const SymmetricTensor<2, 3> S_admissible = stress_return->project_onto_yield_surface(
-        S, state.back_stress, state.equivalent_plastic_strain, state.temperature);
+    const SymmetricTensor<2, 3> S_admissible
+        = stress_return->project_onto_yield_surface(S,
+                                                    state.back_stress,
+                                                    state.equivalent_plastic_strain,
+                                                    state.temperature,
+                                                    PhaseStep::at(state));
     state.stress = dealii::symmetrize(F * Tensor<2, 3>(S_admissible) * dealii::transpose(F)) / J;
   }
 } // namespace ausroll::material

@@ -37,8 +37,11 @@ namespace ausroll::material
     const SymmetricTensor<2, 3> d_stress = stress_return->elasticity(old.temperature).stress(d_eps);
     const SymmetricTensor<2, 3> trial_stress = rotate(Q, old.stress) + rotate(Q_half, d_stress);
     const SymmetricTensor<2, 3> trial_back_stress = rotate(Q, old.back_stress);
-    const ReturnMappingResult   r = stress_return->return_map(
-        trial_stress, trial_back_stress, old.equivalent_plastic_strain, old.temperature);
+    const ReturnMappingResult   r = stress_return->return_map(trial_stress,
+                                                            trial_back_stress,
+                                                            old.equivalent_plastic_strain,
+                                                            old.temperature,
+                                                            PhaseStep::of(old, state));
 
     state.stress = r.stress;
     state.plastic_strain = rotate(Q, old.plastic_strain) + r.plastic_strain_increment;

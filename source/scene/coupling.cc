@@ -6,14 +6,10 @@
  * temperature the field writes into the material points).
  */
 #include <ausroll/core/exceptions.h>
+#include <ausroll/material/carbon_profile.h>
 #include <ausroll/scene/scene.h>
 
-#include <deal.II/base/function_parser.h>
-#include <deal.II/fe/fe_values.h>
-
-#include <cmath>
-#include <limits>
-#include <sstream>
+#include <algorithm>
 
 namespace ausroll::scene
 {
@@ -39,6 +35,11 @@ namespace ausroll::scene
                                                             contact.n_dies(),
                                                             comm);
     thermal->check_die_temperatures(parameters.loading.end_time);
+    // every stage's expressions parsed now, so that an error comes before the run; then stage 0
+    const auto &stages = parameters.stages.stages;
+    for (unsigned int k = stages.size(); k-- > 0;)
+      thermal->set_conditions(stages[k].thermal_conditions,
+                              "Stages/Stage " + std::to_string(k) + "/Thermal condition values");
     thermal->setup();
   }
 
@@ -55,47 +56,27 @@ namespace ausroll::scene
   template <int dim>
   void Scene<dim>::initialize_carbon()
   {
-    const std::string   entry = "Phases/Carbon content";
-    FunctionParser<dim> carbon(1);
-    try
-    {
-      carbon.initialize(dim == 2 ? "x,y" : "x,y,z",
-                        parameters.phases.carbon_content,
-                        std::map<std::string, double>{{"pi", numbers::PI}});
-    }
-    catch (...)
-    {
-      throw InputError(entry + ": cannot parse '" + parameters.phases.carbon_content
-                       + "' (variables: x, y" + (dim == 3 ? ", z)" : ")"));
-    }
-    FEValues<dim> points(
-        system.mapping, system.fe, assembler->quadrature(), update_quadrature_points);
-    double lowest = std::numeric_limits<double>::max(), highest = -lowest;
-    for (const auto &cell : system.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-      {
-        points.reinit(cell);
-        const auto states = system.material_points.get_data(cell);
-        for (unsigned int q = 0; q < states.size(); ++q)
-        {
-          const double C = carbon.value(points.quadrature_point(q));
-          lowest = std::isnan(C) ? -std::numeric_limits<double>::infinity() : std::min(lowest, C);
-          highest = std::max(highest, C);
-          states[q]->committed.carbon = states[q]->trial.carbon = C;
-          states[q]->committed.martensite = states[q]->trial.martensite = 0.;
-          states[q]->committed.bainite = states[q]->trial.bainite = 0.;
-        }
-      }
-    // collective, so that every rank stops with the same message
-    lowest = Utilities::MPI::min(lowest, comm);
-    highest = Utilities::MPI::max(highest, comm);
-    if (!(lowest >= 0. && highest <= 2.1))
-    {
-      std::ostringstream range;
-      range << lowest << " to " << highest;
-      throw InputError(entry + ": '" + parameters.phases.carbon_content + "' ranges from "
-                       + range.str() + " wt% over the workpiece, outside 0 to 2.1 (steels)");
-    }
+    // the depth is measured from Phases/Case boundaries, by default from the surface the dies
+    // touch (their Candidate boundaries)
+    std::vector<unsigned int> case_boundaries = parameters.phases.case_boundaries;
+    if (case_boundaries.empty())
+      for (const auto &die : parameters.contact.dies)
+        for (const unsigned int id : die.candidate_boundaries)
+          if (std::find(case_boundaries.begin(), case_boundaries.end(), id)
+              == case_boundaries.end())
+            case_boundaries.push_back(id);
+    const material::CarbonProfile<dim> profile(parameters.phases.carbon_content,
+                                               system.triangulation,
+                                               case_boundaries,
+                                               parameters.phases.input_directory);
+    material::initialize_carbon(profile,
+                                parameters.phases.carbon_content,
+                                system.mapping,
+                                system.fe,
+                                assembler->quadrature(),
+                                system.dof_handler,
+                                system.material_points,
+                                comm);
     ++system.assembly_cache.state;
   }
 
@@ -103,6 +84,12 @@ namespace ausroll::scene
   void Scene<dim>::thermal_step(const solver::LoadStep &step)
   {
     TimerOutput::Scope scope(*timer, "thermal");
+    if (parameters.stages.declared())
+    {
+      const unsigned int k = parameters.stages.stage_at(step.t_start);
+      thermal->set_conditions(parameters.stages.stages[k].thermal_conditions,
+                              "Stages/Stage " + std::to_string(k) + "/Thermal condition values");
+    }
     thermal->solve_step(step.time,
                         step.time - step.t_start,
                         system.dof_handler,

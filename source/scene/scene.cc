@@ -48,6 +48,8 @@ namespace ausroll::scene
       , stepper(prm.loading, prm.output.directory, log, newton_log)
       , distortion(prm.loading.volume_change_limit)
   {
+    if (parameters.stages.declared())
+      stepper.set_stages(&parameters.stages);
     // An error while setting up (bad mesh file, implausible die, ...) is caught here so that
     // the timer is destroyed while no exception is in flight (it would print an MPI warning).
     try
@@ -123,14 +125,16 @@ namespace ausroll::scene
   {
     if (!postprocessors)
     {
-      const io::PostprocessorContext context{parameters.output,
-                                             parameters.postprocess,
-                                             parameters.loading.end_time,
-                                             parameters.material.yield_stress.min_value(),
-                                             parameters.model.quadrature_points,
-                                             thermal != nullptr,
-                                             parameters.phases.enabled,
-                                             parameters.phases.has_bainite()};
+      io::PostprocessorContext context{parameters.output,
+                                       parameters.postprocess,
+                                       parameters.loading.end_time,
+                                       parameters.material.yield_stress.min_value(),
+                                       parameters.model.quadrature_points,
+                                       thermal != nullptr,
+                                       parameters.phases.enabled,
+                                       parameters.phases.has_bainite()};
+      for (const solver::Stage &stage : parameters.stages.stages)
+        context.stage_end_times.push_back(stage.end_time);
       postprocessors = io::make_standard_postprocessors<dim>(context, comm);
     }
     postprocessors->initialize(postprocess_input());
@@ -308,7 +312,9 @@ namespace ausroll::scene
       adapt_mesh(std::min(t_end, step.time + step.step_size));
 
     const unsigned int interval = parameters.output.interval;
-    if (interval > 0 && step_number % interval == 0)
+    // and at the end of every process stage (the rolled state, the cooled state, ...)
+    if ((interval > 0 && step_number % interval == 0)
+        || (parameters.stages.declared() && parameters.stages.ends_stage(step.time)))
       write_output();
     if (parameters.checkpoint.interval > 0 && step_number % parameters.checkpoint.interval == 0)
       write_checkpoint(step.step_size);

@@ -29,6 +29,7 @@ namespace ausroll::scene
     thermal::ThermalParameters::declare_parameters(prm);
     CouplingParameters::declare_parameters(prm);
     material::PhaseParameters::declare_parameters(prm);
+    solver::StageParameters::declare_parameters(prm);
   }
 
   void SceneParameters::parse_parameters(ParameterHandler &prm, const std::string &input_directory)
@@ -48,6 +49,7 @@ namespace ausroll::scene
     thermal.parse_parameters(prm, input_directory);
     coupling.parse_parameters(prm, thermal.enabled);
     phases.parse_parameters(prm, thermal.enabled, input_directory);
+    stages.parse_parameters(prm, loading, thermal);
     const std::string table_entry = material.first_temperature_dependent_entry();
     require(table_entry.empty() || thermal.enabled,
             table_entry,

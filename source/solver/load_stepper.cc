@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 #include <sstream>
+#include <tuple>
 
 namespace ausroll::solver
 {
@@ -37,6 +38,47 @@ namespace ausroll::solver
   double LoadStepper::nominal_step_size() const
   {
     return loading.end_time / loading.number_of_steps;
+  }
+
+  void LoadStepper::set_stages(const StageParameters *stage_parameters)
+  {
+    stages = stage_parameters;
+  }
+
+  double LoadStepper::current_nominal_step() const
+  {
+    return stage_step > 0. ? stage_step : nominal_step_size();
+  }
+
+  std::pair<double, double> LoadStepper::stage_targets(const double t_done, double &dt)
+  {
+    const unsigned int k = stages->stage_at(t_done);
+    const Stage       &stage = stages->stages[k];
+    const double       start = stages->start_time(k);
+    const double       nominal_dt = nominal_step_size();
+    const double       h = stages->step_size(k, nominal_dt);
+    if (static_cast<int>(k) != current_stage)
+    {
+      current_stage = k;
+      stage_step = h;
+      if (std::abs(t_done - start) <= 1e-10 * std::abs(stages->stages.back().end_time))
+      {
+        // a stage switches conditions: its first step starts from the converged state, without
+        // extrapolating the last stage's increment
+        dt = h;
+        last_step_size = 0.;
+        log << "Stage " << k << " (" << stage.name << "): t = " << start << " to " << stage.end_time
+            << ", step " << h << std::endl;
+      }
+      else
+        log << "resuming in stage " << k << " (" << stage.name << ") at t = " << t_done
+            << std::endl;
+    }
+    // the stage's own grid from its start, or the run's grid of Loading
+    const double grid = stage.step_size > 0.
+                            ? start + h * (std::floor((t_done - start) / h + 1e-9) + 1.)
+                            : nominal_dt * (std::floor(t_done / nominal_dt + 1e-9) + 1.);
+    return {std::min(stage.end_time, grid), stage.end_time};
   }
 
   LoadStep LoadStepper::solve_step(SteppedProblem    &problem,
@@ -120,7 +162,7 @@ namespace ausroll::solver
 
   double LoadStepper::minimum_step_size() const
   {
-    return loading.minimum_step_fraction * nominal_step_size();
+    return loading.minimum_step_fraction * current_nominal_step();
   }
 
   double LoadStepper::next_step_size(const double       dt,
@@ -128,7 +170,7 @@ namespace ausroll::solver
                                      const LoadStep    &step,
                                      const unsigned int status_changes) const
   {
-    const double nominal_dt = nominal_step_size();
+    const double nominal_dt = current_nominal_step();
     if (loading.step_control == StepControl::adaptive)
     {
       // From the step actually taken after a cutback, else from the size asked for (a step
@@ -154,11 +196,14 @@ namespace ausroll::solver
     {
       // Steps end on the grid of nominal steps (also after cutbacks and load-increment-ratio
       // sub-steps), so that outputs and histories of different runs share their times.
-      const double next_grid
+      double next_grid
           = std::min(t_end, nominal_dt * (std::floor(t_done / nominal_dt + 1e-9) + 1.));
+      double step_end = t_end; // the end of the run, or of its stage
+      if (stages != nullptr)
+        std::tie(next_grid, step_end) = stage_targets(t_done, dt);
       double dt_try = std::min(dt, next_grid - t_done);
-      if (t_end - (t_done + dt_try) < 1e-6 * nominal_dt)
-        dt_try = t_end - t_done;
+      if (step_end - (t_done + dt_try) < 1e-6 * current_nominal_step())
+        dt_try = step_end - t_done;
 
       LoadStep step = solve_step(problem, steps_done + 1, t_done, dt_try);
       dt_try = step.time - step.t_start;

@@ -74,6 +74,7 @@ namespace ausroll::thermal
       , quadrature(q)
       , kinematics(std::move(kin))
   {
+    conditions = parameters.conditions;
     for (unsigned int i = 0; i < parameters.conditions.size(); ++i)
       values.push_back(make_parser<dim>(parameters.conditions[i].value,
                                         "Thermal/Condition " + std::to_string(i) + "/Value",
@@ -110,14 +111,30 @@ namespace ausroll::thermal
     constraints.clear();
     constraints.reinit(relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    for (unsigned int i = 0; i < parameters.conditions.size(); ++i)
-      if (parameters.conditions[i].type == ThermalConditionType::temperature)
+    for (unsigned int i = 0; i < conditions.size(); ++i)
+      if (conditions[i].type == ThermalConditionType::temperature)
       {
         values[i]->set_time(t);
         VectorTools::interpolate_boundary_values(
-            mapping, dof_handler, parameters.conditions[i].id, *values[i], constraints);
+            mapping, dof_handler, conditions[i].id, *values[i], constraints);
       }
     constraints.close();
+  }
+
+  template <int dim>
+  void ThermalSystem<dim>::set_conditions(const std::vector<ThermalCondition> &stage_conditions,
+                                          const std::string                   &entry)
+  {
+    AssertDimension(stage_conditions.size(), conditions.size());
+    for (unsigned int i = 0; i < conditions.size(); ++i)
+    {
+      Assert(stage_conditions[i].id == conditions[i].id
+                 && stage_conditions[i].type == conditions[i].type,
+             ExcInternalError());
+      if (stage_conditions[i].value != conditions[i].value)
+        values[i] = make_parser<dim>(stage_conditions[i].value, entry, true);
+    }
+    conditions = stage_conditions;
   }
 
   template <int dim>
@@ -294,9 +311,9 @@ namespace ausroll::thermal
       {
         if (!cell->face(f)->at_boundary())
           continue;
-        for (unsigned int c = 0; c < parameters.conditions.size(); ++c)
+        for (unsigned int c = 0; c < conditions.size(); ++c)
         {
-          const ThermalCondition &condition = parameters.conditions[c];
+          const ThermalCondition &condition = conditions[c];
           if (cell->face(f)->boundary_id() != condition.id
               || condition.type == ThermalConditionType::temperature)
             continue;
@@ -472,11 +489,11 @@ namespace ausroll::thermal
     Vector owned_residual(owned_dofs, comm);
     owned_residual = residual;
     std::vector<bool> counted(owned_dofs.n_elements(), false);
-    for (unsigned int c = 0; c < parameters.conditions.size(); ++c)
-      if (parameters.conditions[c].type == ThermalConditionType::temperature)
+    for (unsigned int c = 0; c < conditions.size(); ++c)
+      if (conditions[c].type == ThermalConditionType::temperature)
       {
-        const IndexSet boundary_dofs = DoFTools::extract_boundary_dofs(
-            dof_handler, ComponentMask(), {parameters.conditions[c].id});
+        const IndexSet boundary_dofs
+            = DoFTools::extract_boundary_dofs(dof_handler, ComponentMask(), {conditions[c].id});
         double heat = 0.;
         for (const auto i : boundary_dofs)
           if (owned_dofs.is_element(i) && !counted[owned_dofs.index_within_set(i)])

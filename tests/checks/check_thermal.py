@@ -86,10 +86,40 @@ bainite      the dilatometry block (carbon 0.8 wt%, Ms 110.9 C) held at 300 C fo
              austenite left, (1 - f_B) (1 - exp(-b (Ms - 20))); the corner moves by
              (theta_th (1 + f_M dV_M/V + f_B dV_B/V)^(1/3) - 1) L (finite strain; dV_B/V = 4.64 -
              1.43 C per cent), both to 1e-8 as dilatometry.
+trip         (ctest check/thermal_trip) the dilatometry block cooled from 250 C to 20 C in 10 steps
+             under a constant uniaxial traction sigma = 100 MPa on x = 10 (below the yield stress
+             240 MPa), Phases/TRIP coefficient K = 1e-4 1/MPa, small strain: the stress is
+             uniaxial and fixed by the load, so Leblond's TRIP strain integrates in closed form,
+             eps_tp,xx = K sigma phi(f), eps_tp,yy = -K sigma phi(f) / 2 with phi(f) = f (1 - ln f)
+             of the Koistinen-Marburger fraction f; the corner moves by L (alpha dT + theta_tr - 1
+             + sigma/E + K sigma phi(f)) in x and L (alpha dT + theta_tr - 1 - nu sigma/E - K sigma
+             phi(f) / 2) in y and z. The step integrates phi exactly (Delta phi from the fractions
+             at both ends) and dev(sigma) is the load's at every step, so the only errors are the
+             history's 10 digits and the Newton tolerance (1e-8 N on a stiffness E A / L ~ 4e5
+             N/mm): 1e-6 of the TRIP strain K sigma = 1e-2 (measured 2026-12-07: see the output).
+             The same run without TRIP (K = 0) gives the corner of the elastic closed form (no
+             TRIP strain), to the same tolerance. Finite strain: the dead load fixes P, and the
+             Kirchhoff stress of the return, tau_xx = sigma lambda_x / theta^3 (the inner model sees
+             F / theta), changes with the stretch; the discrete law ln(lambda_x / theta) = tau_xx /
+             E + sum over the steps of K (phi_n - phi_n-1) tau_xx,n (lateral: -nu tau / E - half the
+             sum; Hencky elasticity, coaxial logarithmic strains add) with the history's
+             stretches, to 1e-8 of K sigma (Newton to 1e-12 of the force level).
+mixture      (ctest check/thermal_trip) the same block, K = 0, compressed in y (top face -0.4 t mm,
+             perfectly plastic austenite sigma_0 = 240 MPa) while it cools through Ms with
+             Phases/Martensite yield stress = 20: 1400, 300: 1100: every step is plastic and the
+             reaction on y = 5 is A times the linear mixture (1 - f) 240 + f sigma_y,M(T) at the
+             step's temperature and fraction (small strain; the multiplicative models see F / theta,
+             theta = theta_th theta_tr, and P = theta^2 P_inner: total Lagrangian times theta
+             lambda_y, the yield on S; updated Lagrangian lambda_x lambda_z, on the Cauchy stress;
+             finite strain theta^3 / lambda_y, on the Kirchhoff stress; the stretches from the
+             corner displacement);
+             1e-8 of sigma_y,M A (the return map solves the yield condition to 1e-13, the history
+             has 10 digits; Newton to 1e-12 of the force level: the default 1e-6 leaves 2e-7 in
+             the reaction of the finite-strain models).
 resume       the conduction run interrupted after step 25 (checkpoints every 10 steps) and resumed
              gives the same history as the uninterrupted run, to the last digit.
 
-Usage: check_thermal.py AUSROLL SOURCE_DIR [CASE ...]
+Usage: check_thermal.py AUSROLL SOURCE_DIR [CASE ...] (without cases: all but trip and mixture)
 """
 
 import csv
@@ -475,6 +505,93 @@ def main():
                 worst = max(worst, abs(float(ra[column]) - float(rc[column])) / scale)
         print(f"reheat: np = 2 against np = 1, largest relative difference {worst:.2e}")
         checks("reheat: np = 2 equals np = 1 to 1e-8", len(rows) == len(c) and worst < 1e-8)
+
+    if "trip" in cases:
+        sigma, K = 100.0, 1e-4
+        dv = (4.64 - 0.53 * CARBON) / 100.0
+        load = phase_block("250 - 230 * t") + [
+            "Boundary conditions/Number of conditions=4", "Boundary conditions/Condition 3/Boundary id=1",
+            "Boundary conditions/Condition 3/Type=traction", f"Boundary conditions/Condition 3/Value={sigma}; 0; 0"]
+        for k in (K, 0.0):
+            directory = f"trip_{k:g}"
+            run(ausroll, block, load + [f"Phases/TRIP coefficient={k}"], directory)
+            worst, phi_end = 0.0, 0.0
+            for row in history(directory)[1:]:
+                T = 250.0 - 230.0 * float(row["time"])
+                f = martensite(T)
+                phi = f * (1.0 - math.log(f)) if f > 0.0 else 0.0
+                free = ALPHA * (T - 20.0) + (1.0 + f * dv) ** (1.0 / 3.0) - 1.0
+                axial = free + sigma / E + k * sigma * phi
+                lateral = free - NU * sigma / E - 0.5 * k * sigma * phi
+                for c, length, strain in (("x", 10.0, axial), ("y", 5.0, lateral), ("z", 4.0, lateral)):
+                    worst = max(worst, abs(float(row[f"corner_u{c}"]) - strain * length) / (length * K * sigma))
+                phi_end = phi
+            print(f"trip (K = {k:g} 1/MPa): final phi(f) {phi_end:.6f}, TRIP strain {k * sigma * phi_end:.6e}, "
+                  f"worst corner deviation {worst:.2e} of L K sigma")
+            checks(f"trip (K = {k:g}): corner strain thermal + transformation + elastic + K sigma phi(f) to 1e-6",
+                   worst < 1e-6 and phi_end > 0.5)
+
+        # finite strain: the dead load gives the Kirchhoff stress of the inner model, tau_xx =
+        # sigma lambda_x / theta^3 (P = theta^2 tau F_inner^-T), which changes with the stretch: the
+        # discrete law, ln(lambda / theta) = tau / E + sum_m K (phi_m - phi_m-1) tau_m (axial; lateral
+        # -nu tau / E - half the sum), checked with the stretches of the history
+        directory = "trip_finite_strain"
+        run(ausroll, block, load + [f"Phases/TRIP coefficient={K}", "Model/Kinematics=finite strain",
+                                    "Solver/Residual tolerance=1e-12"], directory)
+        worst, trip_sum, phi_old = 0.0, 0.0, 0.0
+        for row in history(directory)[1:]:
+            T = 250.0 - 230.0 * float(row["time"])
+            f = martensite(T)
+            phi = f * (1.0 - math.log(f)) if f > 0.0 else 0.0
+            theta = (1.0 + ALPHA * (T - 20.0)) * (1.0 + f * dv) ** (1.0 / 3.0)
+            lx, ly, lz = (1.0 + float(row[f"corner_u{c}"]) / length for c, length in (("x", 10.0), ("y", 5.0), ("z", 4.0)))
+            tau = sigma * lx / theta ** 3
+            trip_sum += K * (phi - phi_old) * tau
+            phi_old = phi
+            worst = max(worst, abs(math.log(lx / theta) - tau / E - trip_sum) / (K * sigma),
+                        abs(math.log(ly / theta) + NU * tau / E + 0.5 * trip_sum) / (K * sigma),
+                        abs(math.log(lz / theta) + NU * tau / E + 0.5 * trip_sum) / (K * sigma))
+        print(f"trip (finite strain): TRIP log strain {trip_sum:.6e}, worst deviation {worst:.2e} of K sigma")
+        checks("trip (finite strain): ln(lambda / theta) = tau / E + sum K dphi tau (Kirchhoff) to 1e-8", worst < 1e-8)
+
+    if "mixture" in cases:
+        rows_m = [(20.0, 1400.0), (300.0, 1100.0)]
+
+        def sigma_m(T):
+            (t0, v0), (t1, v1) = rows_m
+            return v0 + (v1 - v0) * (min(max(T, t0), t1) - t0) / (t1 - t0)
+
+        settings = phase_block("250 - 230 * t") + [
+            "Material/Hardening modulus=0", "Thermal/Taylor-Quinney coefficient=0",
+            "Boundary conditions/Number of conditions=4", "Boundary conditions/Condition 3/Boundary id=3",
+            "Boundary conditions/Condition 3/Components=y", "Boundary conditions/Condition 3/Value=-0.4*t",
+            "Phases/Martensite yield stress=" + ", ".join(f"{t:g}: {v:g}" for t, v in rows_m),
+            "Solver/Residual tolerance=1e-12"]
+        # P_yy on y = 5 per yield stress of the return map's measure, with the stretches of the
+        # corner and the isotropic stretch theta = theta_th theta_tr the inner model sees removed
+        # (F / theta, P = theta^2 P_inner): small strain 1; total Lagrangian (S) theta lambda_y;
+        # updated Lagrangian (Cauchy) lambda_x lambda_z; finite strain (Kirchhoff) theta^3 / lambda_y
+        factors = {"small strain": lambda lx, ly, lz, th: 1.0,
+                   "total Lagrangian": lambda lx, ly, lz, th: th * ly,
+                   "updated Lagrangian": lambda lx, ly, lz, th: lx * lz,
+                   "finite strain": lambda lx, ly, lz, th: th ** 3 / ly}
+        dv = (4.64 - 0.53 * CARBON) / 100.0
+        for kinematics, factor in factors.items():
+            directory = "mixture_" + kinematics.replace(" ", "_")
+            run(ausroll, block, settings + [f"Model/Kinematics={kinematics}"], directory)
+            worst, f_end = 0.0, 0.0
+            for row in history(directory)[1:]:
+                T = 250.0 - 230.0 * float(row["time"])
+                f = martensite(T)
+                stretch = [1.0 + float(row[f"corner_u{c}"]) / length for c, length in (("x", 10.0), ("y", 5.0), ("z", 4.0))]
+                theta = (1.0 + ALPHA * (T - 20.0)) * (1.0 + f * dv) ** (1.0 / 3.0)
+                expected = ((1.0 - f) * SIGMA0 + f * sigma_m(T)) * 40.0 * factor(*stretch, theta)
+                worst = max(worst, abs(abs(float(row["reaction_3_y"])) - expected) / (1400.0 * 40.0))
+                f_end = f
+            print(f"mixture ({kinematics}): final martensite {f_end:.6f}, reaction {float(row['reaction_3_y']):.4f} N, "
+                  f"worst deviation {worst:.2e} of sigma_y,M A")
+            checks(f"mixture ({kinematics}): reaction = A ((1 - f) sigma_0 + f sigma_y,M(T)) (stretches) in every "
+                   "plastic step to 1e-8", worst < 1e-8 and f_end > 0.5)
 
     slide = os.path.join(scenes, "block_slide.prm")
     thermal_on = ["Thermal/Enabled=true", "Thermal/Thermal expansion=0", "Thermal/Initial temperature=20",

@@ -15,11 +15,13 @@ namespace ausroll::testing
 {
   /**
    * Central finite-difference check of A = dP/dF of @p model at @p F for the committed state
-   * @p old: max |A_fd - A| / max |A| with h = 1e-7 (truncation ~1e-12, round-off ~1e-9 relative).
+   * @p old: max |A_fd - A| / max |A| with h = 1e-7 (truncation ~1e-12, round-off ~1e-9 relative),
+   * over the components i, j, k, l < @p n (3: all; 2: the in-plane block).
    */
   inline double tangent_error(const material::ConstitutiveModel &model,
                               const material::MaterialState     &old,
-                              const dealii::Tensor<2, 3>        &F)
+                              const dealii::Tensor<2, 3>        &F,
+                              const unsigned int                 n = 3)
   {
     material::MaterialState trial;
     dealii::Tensor<2, 3>    P;
@@ -27,16 +29,16 @@ namespace ausroll::testing
     model.evaluate(F, old, trial, P, &A);
     const double h = 1e-7;
     double       max_err = 0., scale = 0.;
-    for (unsigned int k = 0; k < 3; ++k)
-      for (unsigned int l = 0; l < 3; ++l)
+    for (unsigned int k = 0; k < n; ++k)
+      for (unsigned int l = 0; l < n; ++l)
       {
         dealii::Tensor<2, 3> Fp = F, Fm = F, Pp, Pm;
         Fp[k][l] += h;
         Fm[k][l] -= h;
         model.evaluate(Fp, old, trial, Pp, nullptr);
         model.evaluate(Fm, old, trial, Pm, nullptr);
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = 0; j < 3; ++j)
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
           {
             const double fd = (Pp[i][j] - Pm[i][j]) / (2. * h);
             max_err = std::max(max_err, std::abs(fd - A[i][j][k][l]));
@@ -44,5 +46,14 @@ namespace ausroll::testing
           }
       }
     return max_err / scale;
+  }
+
+  /** As tangent_error() for a plane-stress model (PlaneStressDriver sets F_zz itself): the
+      in-plane block of dP/dF against central differences of the in-plane components of F. */
+  inline double in_plane_tangent_error(const material::ConstitutiveModel &model,
+                                       const material::MaterialState     &old,
+                                       const dealii::Tensor<2, 3>        &F)
+  {
+    return tangent_error(model, old, F, 2);
   }
 } // namespace ausroll::testing

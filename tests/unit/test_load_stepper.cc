@@ -446,3 +446,98 @@ TEST(LoadStepper, ResumesAtGivenStepAndTime)
   EXPECT_EQ(p.accepted[1].t_start, 0.5);
   EXPECT_EQ(p.accepted[2].time, 1.);
 }
+
+namespace
+{
+  /** Three stages over [0, 1]: quench to 0.375 with steps of 0.125, hold to 0.5 on Loading's
+      grid (0.25), cooling to 1 with steps of 0.1875 (its grid 0.6875, 0.875, 1.0625: the last
+      step is cut at the stage's end). */
+  StageParameters three_stages()
+  {
+    StageParameters s;
+    s.stages = {{"quench", 0.375, 0.125, {}}, {"hold", 0.5, 0., {}}, {"cooling", 1., 0.1875, {}}};
+    return s;
+  }
+
+  /** A stepper through three_stages() with its logs. */
+  struct StagedStepper
+  {
+    Logs                  logs;
+    const StageParameters stages = three_stages();
+    LoadStepper           stepper{loading(), "out", logs.log, logs.detail_log};
+    StagedStepper() { stepper.set_stages(&stages); }
+  };
+} // namespace
+
+// Stage ends are step ends; each stage steps on its own grid from its own step size (not the
+// size the stage before ended with), and the log names each stage where it begins.
+TEST(LoadStepper, StagesEndStepsAndSetTheirStepSize)
+{
+  StagedStepper staged;
+  LoadStepper  &stepper = staged.stepper;
+  MockProblem   p;
+  stepper.run(p, 0., stepper.nominal_step_size(), 0);
+  const std::vector<double> expected{0.125, 0.25, 0.375, 0.5, 0.6875, 0.875, 1.};
+  EXPECT_EQ(p.times(), expected);
+  // a step starting at a stage's end belongs to the next stage
+  EXPECT_EQ(staged.stages.stage_at(0.375), 1u);
+  EXPECT_EQ(staged.stages.stage_at(0.3), 0u);
+  for (const char *line : {"Stage 0 (quench): t = 0 to 0.375, step 0.125\n",
+                           "Stage 1 (hold): t = 0.375 to 0.5, step 0.25\n",
+                           "Stage 2 (cooling): t = 0.5 to 1, step 0.1875\n"})
+    EXPECT_NE(staged.logs.text.str().find(line), std::string::npos) << staged.logs.text.str();
+}
+
+// After a cutback inside a stage the step-size control works within the stage's nominal step
+// (growth back to 0.1875, not to Loading's 0.25), and the next stage starts with its own step.
+TEST(LoadStepper, StagesBoundTheStepSizeControl)
+{
+  StagedStepper staged;
+  LoadStepper  &stepper = staged.stepper;
+  MockProblem   p;
+  // step 5 (the first of the cooling) fails at 0.1875: cut back to 0.09375, then 1.5 times that
+  p.converges = [](unsigned int step, double dt, double) { return step != 5 || dt < 0.1; };
+  stepper.run(p, 0., stepper.nominal_step_size(), 0);
+  // 0.09375 kept after the cutback, then 1.5 times: 0.140625, then 0.2109375 bounded by 0.1875
+  const std::vector<double> expected{0.125, 0.25, 0.375, 0.5, 0.59375, 0.6875, 0.828125, 0.875, 1.};
+  EXPECT_EQ(p.times(), expected);
+  EXPECT_EQ(p.accepted[4].cutbacks, 1u);
+  EXPECT_EQ(p.accepted[7].step_size, 0.1875); // the size held before step 8: the stage's step
+}
+
+// A resume inside a stage (from a checkpoint) continues on the stage's grid with the stored
+// step size and says where it resumed.
+TEST(LoadStepper, StagesResumeInsideAStage)
+{
+  StagedStepper staged;
+  LoadStepper  &stepper = staged.stepper;
+  MockProblem   p;
+  p.accepted.push_back({}); // as if 5 steps had been accepted, the last at t = 0.6875
+  p.accepted.back().time = 0.6875;
+  stepper.run(p, 0.6875, 0.1875, 5);
+  ASSERT_EQ(p.accepted.size(), 3u);
+  EXPECT_EQ(p.accepted[1].time, 0.875);
+  EXPECT_EQ(p.accepted[2].time, 1.);
+  EXPECT_NE(staged.logs.text.str().find("resuming in stage 2 (cooling) at t = 0.6875"),
+            std::string::npos)
+      << staged.logs.text.str();
+}
+
+// The first step of a stage is solved without the predictor (the increment of the stage before
+// says nothing of the new conditions: 0.25 / 0.125 would extrapolate it twice), later steps with
+// it.
+TEST(LoadStepper, StagesStartWithoutThePredictor)
+{
+  Logs              logs;
+  LoadingParameters l = loading();
+  l.predictor = Predictor::linear_extrapolation;
+  LoadStepper           stepper(l, "out", logs.log, logs.detail_log);
+  const StageParameters stages = three_stages();
+  stepper.set_stages(&stages);
+  MockProblem p;
+  stepper.run(p, 0., stepper.nominal_step_size(), 0);
+  ASSERT_EQ(p.solves.size(), 7u);
+  const std::vector<double> ratios{0., 1., 1., 0., 0., 1., 0.125 / 0.1875};
+  for (unsigned int i = 0; i < ratios.size(); ++i)
+    EXPECT_EQ(p.solves[i].ratio, ratios[i]) << "solve " << i;
+}

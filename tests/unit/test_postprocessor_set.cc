@@ -7,6 +7,7 @@
 #include <ausroll/io/postprocess/material_state.h>
 #include <ausroll/io/postprocess/monitor_points.h>
 #include <ausroll/io/postprocess/reaction_forces.h>
+#include <ausroll/io/postprocess/stage.h>
 #include <ausroll/io/postprocess/standard_set.h>
 #include <ausroll/io/postprocess/step_statistics.h>
 #include <ausroll/material/constitutive_model.h>
@@ -205,16 +206,18 @@ TEST(PostprocessorSet, DuplicateColumnIsAnInternalError)
 }
 
 // The registered postprocessors in the order of the lines of make_standard_postprocessors() before
-// the registry (part of the output format: a change reorders every history.csv), the temperature
-// and phase postprocessors last and only in runs that have them; 2D and 3D alike.
+// the registry (part of the output format: a change reorders every history.csv), the temperature,
+// phase and stage postprocessors last and only in runs that have them; 2D and 3D alike.
 TEST(PostprocessorRegistry, StandardSetKeepsTheColumnOrder)
 {
   const io::OutputParameters      output;
   const io::PostprocessParameters postprocess;
   for (const bool thermal : {false, true})
   {
-    const io::PostprocessorContext context{output, postprocess, 1., 100., 2, thermal, thermal};
-    std::vector<std::string>       expected{"step statistics",
+    io::PostprocessorContext context{output, postprocess, 1., 100., 2, thermal, thermal};
+    if (thermal)
+      context.stage_end_times = {0.5, 1.};
+    std::vector<std::string> expected{"step statistics",
                                       "applied pressures",
                                       "monitor points",
                                       "reaction forces",
@@ -226,7 +229,7 @@ TEST(PostprocessorRegistry, StandardSetKeepsTheColumnOrder)
                                       "cell averages",
                                       "die geometry"};
     if (thermal)
-      expected.insert(expected.end(), {"temperature", "phases"});
+      expected.insert(expected.end(), {"temperature", "phases", "stage"});
     const auto               set_2d = io::make_standard_postprocessors<2>(context, MPI_COMM_SELF);
     const auto               set_3d = io::make_standard_postprocessors<3>(context, MPI_COMM_SELF);
     std::vector<std::string> names_2d, names_3d;
@@ -237,4 +240,18 @@ TEST(PostprocessorRegistry, StandardSetKeepsTheColumnOrder)
     EXPECT_EQ(names_2d, expected);
     EXPECT_EQ(names_3d, expected);
   }
+}
+
+// The stage column: the stage whose interval (start, end] holds the time; a time at a stage's end
+// (to round-off) belongs to that stage, the initial row to stage 0.
+TEST(PostprocessorRegistry, StageColumnFollowsTheTime)
+{
+  const io::postprocess::StageColumn<2> column({2., 3., 13.});
+  EXPECT_EQ(column.stage_of(0.), 0u);
+  EXPECT_EQ(column.stage_of(2.), 0u);
+  EXPECT_EQ(column.stage_of(2. - 1e-14), 0u);
+  EXPECT_EQ(column.stage_of(2. + 1e-14), 0u); // round-off of a step ending on the stage's end
+  EXPECT_EQ(column.stage_of(2.1), 1u);
+  EXPECT_EQ(column.stage_of(3.), 1u);
+  EXPECT_EQ(column.stage_of(13.), 2u);
 }

@@ -11,6 +11,7 @@
 #include <ausroll/material/phase_transformation_model.h>
 #include <ausroll/material/property_table.h>
 #include <ausroll/material/thermal_expansion_model.h>
+#include <ausroll/material/transformation_plasticity.h>
 
 #include "material_test_utilities.h"
 
@@ -429,4 +430,296 @@ TEST(BainiteKinetics, BadTablesNameTheEntry)
             std::string::npos);
   EXPECT_NE(message("250: 20, 350: 10", "250: 400, 350: 5").find("later than the start"),
             std::string::npos);
+}
+
+// ------------------------------------------- TRIP and the mixture rule of the yield stress
+
+namespace
+{
+  /** Phases with TRIP (K in 1/MPa) and, if @p mixture, martensite and bainite yield stresses. */
+  PhaseParameters trip_phases(const double K, const bool mixture)
+  {
+    PhaseParameters p = phases();
+    p.mechanics.trip_coefficient = K;
+    if (mixture)
+    {
+      p.mechanics.martensite_yield_stress
+          = PropertyTable::parse("20: 1400, 300: 1100", "m", "", true);
+      p.mechanics.martensite_yield_given = true;
+      p.mechanics.bainite_yield_stress = PropertyTable(800.);
+      p.mechanics.bainite_yield_given = true;
+    }
+    return p;
+  }
+
+  /** A deviatoric back stress (MPa). */
+  dealii::SymmetricTensor<2, 3> some_back_stress()
+  {
+    dealii::SymmetricTensor<2, 3> beta;
+    beta[0][0] = 30.;
+    beta[1][1] = -10.;
+    beta[2][2] = -20.;
+    beta[0][1] = 15.;
+    return beta;
+  }
+
+  /** A deviatoric-plus-pressure stress (MPa). */
+  dealii::SymmetricTensor<2, 3> some_stress(const double scale)
+  {
+    dealii::SymmetricTensor<2, 3> s;
+    s[0][0] = 1.0 * scale;
+    s[1][1] = -0.4 * scale;
+    s[2][2] = 0.1 * scale;
+    s[0][1] = 0.3 * scale;
+    s[1][2] = -0.2 * scale;
+    return s;
+  }
+} // namespace
+
+TEST(TransformationPlasticity, LeblondPhiAndTripCompliance)
+{
+  // phi(z) = z (1 - ln z): 0 at 0, 1 at 1, increasing; kappa = 3/2 K (phi(z) - phi(z_old)) of
+  // the product fraction z = f_M + f_B, 0 when nothing forms.
+  EXPECT_EQ(TransformationPlasticity::leblond_phi(0.), 0.);
+  EXPECT_NEAR(TransformationPlasticity::leblond_phi(1.), 1., 1e-15);
+  EXPECT_NEAR(TransformationPlasticity::leblond_phi(0.5), 0.5 * (1. + std::log(2.)), 1e-15);
+  TransformationPlasticityParameters p;
+  p.trip_coefficient = 1e-4;
+  const TransformationPlasticity trip(p);
+  const PhaseStep                step{0.1, 0.2, 0.4, 0.25};
+  EXPECT_NEAR(trip.trip_compliance(step),
+              1.5e-4
+                  * (TransformationPlasticity::leblond_phi(0.65)
+                     - TransformationPlasticity::leblond_phi(0.3)),
+              1e-18);
+  EXPECT_EQ(trip.trip_compliance(PhaseStep{0.4, 0.25, 0.4, 0.25}), 0.);
+  // no mixture entries: the austenite's law for every phase
+  EXPECT_EQ(trip.austenite_weight(step), 1.);
+  EXPECT_EQ(trip.product_yield_stress(step, 20.), 0.);
+}
+
+TEST(TransformationPlasticity, ReturnMapSatisfiesItsEquations)
+{
+  // The discrete equations, checked on the result (not on the closed form the code uses):
+  // sigma = sigma_trial - 2 mu (Delta eps_p + Delta eps_tp), Delta eps_tp = kappa dev(sigma),
+  // Delta eps_p = sqrt(3/2) dgamma n (so dgamma = sqrt(2/3) |Delta eps_p|) along dev(sigma) - beta,
+  // beta = beta_old + 2/3 H_k Delta eps_p, and on yield sqrt(3/2) |dev sigma - beta| = w
+  // sigma_y,A(alpha + dgamma) + f_M sigma_y,M(T) + f_B sigma_y,B(T). Elastic (TRIP only) and
+  // plastic, with a back stress.
+  MaterialParameters material = steel(1000.);
+  material.kinematic_hardening_modulus = 5000.;
+  const PhaseParameters p = trip_phases(1e-4, true);
+  const auto            model = create_plasticity_model(material, &p.mechanics);
+  const double          mu = 200000. / 2.6, T = 150.;
+  const PhaseStep       step{0.1, 0.05, 0.3, 0.1};
+  const double          kappa = 1.5e-4
+                       * (TransformationPlasticity::leblond_phi(0.4)
+                          - TransformationPlasticity::leblond_phi(0.15));
+  const double sigma_y
+      = 0.6 * (400. + 1000. * 0.02) + 0.3 * (1400. - 300. * 130. / 280.) + 0.1 * 800.;
+  dealii::SymmetricTensor<2, 3> beta_old;
+  beta_old[0][0] = 20.;
+  beta_old[1][1] = -20.;
+  beta_old[0][2] = 10.;
+  for (const double scale : {100., 20000.})
+  {
+    const dealii::SymmetricTensor<2, 3> trial
+        = some_stress(scale) + 50. * dealii::unit_symmetric_tensor<3>();
+    const ReturnMappingResult           r = model->return_map(trial, beta_old, 0.02, T, step);
+    const dealii::SymmetricTensor<2, 3> s = dealii::deviator(r.stress);
+    const dealii::SymmetricTensor<2, 3> d_tp = kappa * s;
+    const dealii::SymmetricTensor<2, 3> d_p = r.plastic_strain_increment - d_tp;
+    EXPECT_LT((r.stress - (trial - 2. * mu * r.plastic_strain_increment)).norm(), 1e-9 * scale);
+    EXPECT_LT((r.back_stress - beta_old - 2. / 3. * 5000. * d_p).norm(), 1e-9 * scale);
+    EXPECT_NEAR(std::sqrt(2. / 3.) * d_p.norm(), r.eq_plastic_strain_increment, 1e-12);
+    EXPECT_TRUE(r.trip);
+    if (scale < 1000.)
+      EXPECT_FALSE(r.plastic);
+    else
+    {
+      EXPECT_TRUE(r.plastic);
+      const dealii::SymmetricTensor<2, 3> eta = s - r.back_stress;
+      EXPECT_LT((d_p / d_p.norm() - eta / eta.norm()).norm(), 1e-12);
+      EXPECT_NEAR(std::sqrt(1.5) * eta.norm(),
+                  sigma_y + 0.6 * 1000. * r.eq_plastic_strain_increment,
+                  1e-9 * sigma_y);
+      EXPECT_NEAR(model->yield_function(r.stress,
+                                        r.back_stress,
+                                        0.02 + r.eq_plastic_strain_increment,
+                                        T,
+                                        PhaseStep{0.3, 0.1, 0.3, 0.1}),
+                  0.,
+                  1e-9 * sigma_y);
+    }
+  }
+}
+
+TEST(TransformationPlasticity, TangentsMatchFiniteDifferences)
+{
+  // dP/dF with TRIP (K = 2e-5 1/MPa: small enough that the 3 % strain still yields) and the
+  // mixture rule around every kinematics, against
+  // central differences (1e-6 relative, as the isothermal models): a plastic and an elastic F
+  // while martensite forms (f_M from 0 or from 0.2 to about 0.45 at 60 C), with and without a
+  // rotated back stress (H_k > 0: the back-stress sensitivity of the updated Lagrangian and
+  // finite-strain models), and with TRIP alone.
+  const ThermalExpansionParameters thermal = expansion(1.2e-5);
+  const Tensor<2, 3>               F_plastic
+      = identity() + Tensor<2, 3>({{0.03, 0.01, 0.}, {0.005, -0.02, 0.002}, {0., 0.003, -0.008}});
+  const Tensor<2, 3> F_elastic
+      = identity() + 1e-4 * Tensor<2, 3>({{3., 1., 0.}, {0.5, -2., 0.2}, {0., 0.3, -0.8}});
+  MaterialParameters kinematic = steel(1000.);
+  kinematic.kinematic_hardening_modulus = 5000.;
+  for (const bool mixture : {true, false})
+    for (const double f_old : {0., 0.2})
+      for (const bool back : {false, true})
+        for (const KinematicsType k : all_kinematics)
+        {
+          const PhaseParameters p = trip_phases(2e-5, mixture);
+          const auto            model
+              = create_constitutive_model(k, back ? kinematic : steel(1000.), false, &thermal, &p);
+          MaterialState old;
+          old.temperature = 60.;
+          old.carbon = 0.8;
+          old.martensite = f_old;
+          old.equivalent_plastic_strain = 0.01;
+          if (back)
+          {
+            old.back_stress = some_back_stress();
+          }
+          MaterialState state;
+          Tensor<2, 3>  P;
+          model->evaluate(F_plastic, old, state, P, nullptr);
+          EXPECT_GT(state.martensite, f_old + 0.15);
+          EXPECT_GT(state.equivalent_plastic_strain, 0.01) << to_string(k);
+          const double e_plastic = ausroll::testing::tangent_error(*model, old, F_plastic);
+          const double e_elastic = ausroll::testing::tangent_error(*model, old, F_elastic);
+          std::printf("[ %-18s ] mixture %d, f_old %.1f, back stress %d: FD error plastic %.2e, "
+                      "elastic %.2e\n",
+                      to_string(k).c_str(),
+                      mixture,
+                      f_old,
+                      back,
+                      e_plastic,
+                      e_elastic);
+          EXPECT_LT(e_plastic, 1e-6) << to_string(k);
+          EXPECT_LT(e_elastic, 1e-6) << to_string(k);
+        }
+}
+
+TEST(TransformationPlasticity, PlaneStressTangentsMatchFiniteDifferences)
+{
+  // The PlaneStressDriver around the phase model (TRIP, mixture, back stress) condenses F_zz out
+  // of the tangent: the in-plane dP/dF against central differences of the in-plane F (as
+  // test_finite_strain.cc checks the driver), 1e-6 as above.
+  const ThermalExpansionParameters thermal = expansion(1.2e-5);
+  const PhaseParameters            p = trip_phases(2e-5, true);
+  MaterialParameters               kinematic = steel(1000.);
+  kinematic.kinematic_hardening_modulus = 5000.;
+  const Tensor<2, 3> F_plastic
+      = identity() + Tensor<2, 3>({{0.03, 0.01, 0.}, {0.005, -0.02, 0.}, {0., 0., 0.}});
+  for (const KinematicsType k : all_kinematics)
+  {
+    const auto    model = create_constitutive_model(k, kinematic, true, &thermal, &p);
+    MaterialState old;
+    old.temperature = 60.;
+    old.carbon = 0.8;
+    old.back_stress = some_back_stress();
+    MaterialState state;
+    Tensor<2, 3>  P;
+    model->evaluate(F_plastic, old, state, P, nullptr);
+    EXPECT_GT(state.equivalent_plastic_strain, 0.) << to_string(k);
+    EXPECT_LT(std::abs(P[2][2]), 1e-9 * 400.) << to_string(k);
+    const double error = ausroll::testing::in_plane_tangent_error(*model, old, F_plastic);
+    std::printf("[ %-18s ] plane stress: FD error %.2e\n", to_string(k).c_str(), error);
+    EXPECT_LT(error, 1e-6) << to_string(k);
+  }
+}
+
+TEST(TransformationPlasticity, DefaultsLeaveTheReturnMapUnchanged)
+{
+  // K = 0 and no mixture entries: the phase model gives the stress and tangent of the model
+  // without TRIP to the last bit (the return map without phases runs).
+  const ThermalExpansionParameters thermal = expansion(1.2e-5);
+  const PhaseParameters            off = phases();
+  ASSERT_FALSE(off.mechanics.active());
+  const Tensor<2, 3> F
+      = identity() + Tensor<2, 3>({{0.03, 0.01, 0.}, {0.005, -0.02, 0.002}, {0., 0.003, -0.008}});
+  for (const KinematicsType k : all_kinematics)
+  {
+    const auto    model = create_constitutive_model(k, steel(1000.), false, &thermal, &off);
+    MaterialState old;
+    old.temperature = 60.;
+    old.carbon = 0.8;
+    MaterialState a, b;
+    Tensor<2, 3>  Pa, Pb;
+    Tensor<4, 3>  Aa, Ab;
+    model->evaluate(F, old, a, Pa, &Aa);
+    PhaseParameters zero = phases();
+    zero.mechanics.trip_coefficient = 0.;
+    const auto same = create_constitutive_model(k, steel(1000.), false, &thermal, &zero);
+    same->evaluate(F, old, b, Pb, &Ab);
+    EXPECT_EQ(Pa, Pb) << to_string(k);
+    EXPECT_EQ(Aa, Ab) << to_string(k);
+  }
+}
+
+TEST(TransformationPlasticity, BadEntriesNameTheEntry)
+{
+  const auto message = [](const std::string &K, const std::string &martensite)
+  {
+    dealii::ParameterHandler prm;
+    prm.enter_subsection("Phases");
+    TransformationPlasticityParameters::declare_parameters(prm);
+    prm.set("TRIP coefficient", K);
+    prm.set("Martensite yield stress", martensite);
+    TransformationPlasticityParameters p;
+    try
+    {
+      p.parse_parameters(prm, "");
+    }
+    catch (const ausroll::InputError &e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("1e-4", "20: 1400, 300: 1100"), "no error");
+  EXPECT_NE(message("-1e-5", "").find("Phases/TRIP coefficient: must not be negative"),
+            std::string::npos);
+  EXPECT_NE(message("0", "300: 1100, 20: 1400").find("Phases/Martensite yield stress"),
+            std::string::npos);
+}
+
+TEST(TransformationPlasticity, ElasticMaterialRelaxesByTrip)
+{
+  // Yield criterion none: TRIP alone, dev sigma = 2 mu dev eps / c with c = 1 + 2 mu kappa,
+  // kappa = 3/2 K phi(f) (small strain; the transformation strain is volumetric, so dev eps is
+  // the total one), to round-off; dP/dF of all four kinematics against central differences.
+  MaterialParameters elastic = steel();
+  elastic.yield_criterion = YieldCriterion::none;
+  const ThermalExpansionParameters thermal = expansion(0.);
+  const PhaseParameters            p = trip_phases(1e-4, false);
+  const Tensor<2, 3>               strain({{0.002, 0.001, 0.}, {0.001, -0.001, 0.}, {0., 0., 0.}});
+  for (const KinematicsType k : all_kinematics)
+  {
+    const auto    model = create_constitutive_model(k, elastic, false, &thermal, &p);
+    MaterialState old;
+    old.temperature = 60.;
+    old.carbon = 0.8;
+    if (k == KinematicsType::small_strain)
+    {
+      MaterialState state;
+      Tensor<2, 3>  P;
+      model->evaluate(identity() + strain, old, state, P, nullptr);
+      const double mu = 200000. / 2.6;
+      const double c
+          = 1. + 2. * mu * 1.5e-4 * TransformationPlasticity::leblond_phi(state.martensite);
+      const dealii::SymmetricTensor<2, 3> expected
+          = 2. * mu / c * dealii::deviator(dealii::symmetrize(strain));
+      EXPECT_GT(c, 10.);
+      EXPECT_LT((dealii::deviator(state.stress) - expected).norm(), 1e-12 * expected.norm());
+    }
+    EXPECT_LT(ausroll::testing::tangent_error(*model, old, identity() + strain), 1e-6)
+        << to_string(k);
+  }
 }

@@ -85,16 +85,22 @@ namespace ausroll::material
      */
     virtual double yield_function(const MaterialState &state) const
     {
-      return plasticity().yield_function(
-          state.stress, state.back_stress, state.equivalent_plastic_strain, state.temperature);
+      return plasticity().yield_function(state.stress,
+                                         state.back_stress,
+                                         state.equivalent_plastic_strain,
+                                         state.temperature,
+                                         PhaseStep::at(state));
     }
 
     /** Project the stress of @p state onto the yield surface if it lies outside (after a mesh
         transfer); in the stress measure of yield_function(). */
     virtual void make_admissible(MaterialState &state) const
     {
-      state.stress = plasticity().project_onto_yield_surface(
-          state.stress, state.back_stress, state.equivalent_plastic_strain, state.temperature);
+      state.stress = plasticity().project_onto_yield_surface(state.stress,
+                                                             state.back_stress,
+                                                             state.equivalent_plastic_strain,
+                                                             state.temperature,
+                                                             PhaseStep::at(state));
     }
   };
 

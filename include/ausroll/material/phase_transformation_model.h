@@ -6,20 +6,27 @@
 #pragma once
 
 #include <ausroll/material/bainite_kinetics.h>
+#include <ausroll/material/carbon_function.h>
+#include <ausroll/material/transformation_plasticity.h>
 #include <ausroll/material/wrapped_model.h>
 
-#include <deal.II/base/function_parser.h>
-
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace ausroll::material
 {
   /** The `Phases` subsection (martensite kinetics and transformation strain). */
   struct PhaseParameters
   {
-    bool        enabled = false;        ///< `Enabled`
-    std::string carbon_content = "0.2"; ///< `Carbon content` (wt%, expression of x, y, z)
+    bool enabled = false; ///< `Enabled`
+    /** `Carbon content` (wt%): an expression of x, y, z and depth, or `file: NAME.csv` of C
+        against depth (material::CarbonProfile). */
+    std::string carbon_content = "0.2";
+    /** `Case boundaries`: the boundary ids whose initial outline the depth is measured from
+        (empty: the Candidate boundaries of the dies). */
+    std::vector<unsigned int> case_boundaries;
     /** `Martensite start temperature` Ms(C), expression of C (wt%); default Andrews' linear
         relation with the other elements of AISI 9310. */
     std::string martensite_start = "539 - 423*C - 30.4*0.55 - 17.7*3.25 - 12.1*1.2 - 7.5*0.12";
@@ -32,6 +39,9 @@ namespace ausroll::material
     std::string bainite_finish;
     /** `Bainite volume change` austenite to bainite in per cent, expression of C. */
     std::string bainite_volume_change = "4.64 - 1.43*C";
+    /** `TRIP coefficient`, `Martensite yield stress`, `Bainite yield stress`: the mechanics of
+        the transformation in the return map (TransformationPlasticity). */
+    TransformationPlasticityParameters mechanics;
     /** Folder of the `.prm` file (resolves `file:` tables). */
     std::string input_directory;
 
@@ -64,8 +74,10 @@ namespace ausroll::material
    *   martensite: f_B = xi (1 - f_M) with xi the kinetics' share; martensite then forms from the
    *   austenite left, f_M = max(f_M,old, (1 - f_B) KM(T)); its volume change f_B dV_B/V(C) adds
    *   to the martensite's in the stretch theta_tr = (1 + f_M dV_M/V + f_B dV_B/V)^(1/3).
-   * Not yet: transformation plasticity (TRIP), a mixture rule for the yield stress, the
-   * mechanical stabilisation of austenite.
+   * - the fractions of the step are written into the trial state before the inner model runs:
+   *   its return map reads them (PhaseStep::of(old, state)) for TRIP and the mixture rule of the
+   *   yield stress (`TRIP coefficient`, `Martensite yield stress`, TransformationPlasticity).
+   * Not yet: the mechanical stabilisation of austenite, the hardening memory of the austenite.
    */
   class PhaseTransformationModel : public WrappedModel
   {
@@ -109,12 +121,12 @@ namespace ausroll::material
     double transformation_stretch(const double f, const double C, const double f_b = 0.) const;
 
   private:
-    BainiteKinetics                            bainite;          ///< TTT kinetics (may be inactive)
-    std::unique_ptr<dealii::FunctionParser<1>> dv_bainite;       ///< dV/V(C) of bainite, per cent
-    double                                     step_length = 0.; ///< dt of the current step
+    BainiteKinetics               bainite;          ///< TTT kinetics (may be inactive)
+    std::optional<CarbonFunction> dv_bainite;       ///< dV/V(C) of bainite, per cent
+    double                        step_length = 0.; ///< dt of the current step
 
-    double                                     b;  ///< Koistinen-Marburger coefficient (1/K)
-    std::unique_ptr<dealii::FunctionParser<1>> ms; ///< Ms(C)
-    std::unique_ptr<dealii::FunctionParser<1>> dv; ///< dV/V(C) in per cent
+    double         b;  ///< Koistinen-Marburger coefficient (1/K)
+    CarbonFunction ms; ///< Ms(C)
+    CarbonFunction dv; ///< dV/V(C) in per cent
   };
 } // namespace ausroll::material

@@ -10,6 +10,7 @@
 #include <ausroll/material/elasticity.h>
 #include <ausroll/material/hardening_law.h>
 #include <ausroll/material/material_parameters.h>
+#include <ausroll/material/transformation_plasticity.h>
 
 #include <deal.II/base/symmetric_tensor.h>
 
@@ -30,6 +31,12 @@ namespace ausroll::material
     dealii::SymmetricTensor<4, 3>
          tangent;         ///< algorithmic tangent d stress / d (elastic trial strain)
     bool plastic = false; ///< true if the step was plastic
+    /** True if a TRIP strain is part of plastic_strain_increment (phases with `TRIP
+        coefficient`; then it is nonzero even in an elastic step). */
+    bool trip = false;
+    /** c = 1 + 2 mu kappa of the TRIP return (dev sigma = (dev sigma_trial - 2 mu Delta eps_p) /
+        c); 1 without TRIP. */
+    double trip_factor = 1.;
   };
 
   /**
@@ -59,6 +66,12 @@ namespace ausroll::material
    * The kinematics (SmallStrainModel, TotalLagrangianModel, UpdatedLagrangianJaumannModel,
    * FiniteStrainLogModel) and the PlaneStressDriver use nothing else, and
    * create_plasticity_model() is the one factory line to add.
+   *
+   * Phases (TRIP and the mixture rule of the yield stress, TransformationPlasticity): the
+   * kinematics call the overloads with a PhaseStep; without the `Phases` entries that switch
+   * them on they forward to the calls above (the same stress bit for bit), with them they call
+   * transforming_return_map() and its siblings, which a criterion overrides to support phases
+   * (von Mises and none do; the default throws).
    */
   class PlasticityModel
   {
@@ -109,6 +122,50 @@ namespace ausroll::material
     virtual dealii::SymmetricTensor<4, 3>
     back_stress_sensitivity(const ReturnMappingResult &result, const double temperature) const = 0;
 
+    /** return_map() over a step with the phase fractions @p phases (TRIP, mixture rule). */
+    ReturnMappingResult return_map(const dealii::SymmetricTensor<2, 3> &trial_stress,
+                                   const dealii::SymmetricTensor<2, 3> &back_stress_old,
+                                   const double                         alpha_old,
+                                   const double                         temperature,
+                                   const PhaseStep                     &phases) const
+    {
+      if (!transformation)
+        return return_map(trial_stress, back_stress_old, alpha_old, temperature);
+      return transforming_return_map(trial_stress, back_stress_old, alpha_old, temperature, phases);
+    }
+
+    /** yield_function() at the phase fractions of @p phases (the mixture rule). */
+    double yield_function(const dealii::SymmetricTensor<2, 3> &stress,
+                          const dealii::SymmetricTensor<2, 3> &back_stress,
+                          const double                         alpha,
+                          const double                         temperature,
+                          const PhaseStep                     &phases) const
+    {
+      if (!transformation)
+        return yield_function(stress, back_stress, alpha, temperature);
+      return transforming_yield_function(stress, back_stress, alpha, temperature, phases);
+    }
+
+    /** project_onto_yield_surface() at the phase fractions of @p phases (the mixture rule). */
+    dealii::SymmetricTensor<2, 3>
+    project_onto_yield_surface(const dealii::SymmetricTensor<2, 3> &stress,
+                               const dealii::SymmetricTensor<2, 3> &back_stress,
+                               const double                         alpha,
+                               const double                         temperature,
+                               const PhaseStep                     &phases) const
+    {
+      if (!transformation)
+        return project_onto_yield_surface(stress, back_stress, alpha, temperature);
+      return transforming_projection(stress, back_stress, alpha, temperature, phases);
+    }
+
+    /** Switch on TRIP and the mixture rule of @p parameters (nothing if they are off). */
+    void set_transformation(const TransformationPlasticityParameters &parameters)
+    {
+      if (parameters.active())
+        transformation = std::make_shared<const TransformationPlasticity>(parameters);
+    }
+
     /** The elastic law at @p temperature. */
     IsotropicElasticity elasticity(const double temperature) const
     {
@@ -119,6 +176,37 @@ namespace ausroll::material
     }
 
   protected:
+    /**
+     * The return with TRIP and the mixture rule (only called when set_transformation() switched
+     * them on): as return_map(), with Delta eps_tp = kappa dev(sigma) added to the plastic strain
+     * increment and the yield stress of the mixture at the end of the step. Default: throws
+     * (a criterion without phase support).
+     */
+    virtual ReturnMappingResult
+    transforming_return_map(const dealii::SymmetricTensor<2, 3> &trial_stress,
+                            const dealii::SymmetricTensor<2, 3> &back_stress_old,
+                            const double                         alpha_old,
+                            const double                         temperature,
+                            const PhaseStep                     &phases) const;
+
+    /** yield_function() with the mixture rule. Default: throws. */
+    virtual double transforming_yield_function(const dealii::SymmetricTensor<2, 3> &stress,
+                                               const dealii::SymmetricTensor<2, 3> &back_stress,
+                                               const double                         alpha,
+                                               const double                         temperature,
+                                               const PhaseStep                     &phases) const;
+
+    /** project_onto_yield_surface() with the mixture rule. Default: no projection. */
+    virtual dealii::SymmetricTensor<2, 3>
+    transforming_projection(const dealii::SymmetricTensor<2, 3> &stress,
+                            const dealii::SymmetricTensor<2, 3> &back_stress,
+                            const double                         alpha,
+                            const double                         temperature,
+                            const PhaseStep                     &phases) const;
+
+    /** TRIP and the mixture rule (null: off, the calls without phases run). */
+    std::shared_ptr<const TransformationPlasticity> transformation;
+
     /** The elasticity tensor C at @p temperature: the stored one for constant moduli (no copy
         on the material point's path), else computed into @p storage. */
     const dealii::SymmetricTensor<4, 3> &
@@ -144,6 +232,9 @@ namespace ausroll::material
   {
   public:
     using PlasticityModel::PlasticityModel;
+    using PlasticityModel::project_onto_yield_surface;
+    using PlasticityModel::return_map;
+    using PlasticityModel::yield_function;
 
     ReturnMappingResult return_map(const dealii::SymmetricTensor<2, 3> &trial_stress,
                                    const dealii::SymmetricTensor<2, 3> &back_stress_old,
@@ -161,6 +252,25 @@ namespace ausroll::material
     /** Zero: the elastic return does not see the back stress. */
     dealii::SymmetricTensor<4, 3> back_stress_sensitivity(const ReturnMappingResult &result,
                                                           const double temperature) const override;
+
+  protected:
+    /** Elastic with TRIP: dev sigma = dev sigma_trial / (1 + 2 mu kappa). */
+    ReturnMappingResult
+    transforming_return_map(const dealii::SymmetricTensor<2, 3> &trial_stress,
+                            const dealii::SymmetricTensor<2, 3> &back_stress_old,
+                            const double                         alpha_old,
+                            const double                         temperature,
+                            const PhaseStep                     &phases) const override;
+
+    /** -1: never yields. */
+    double transforming_yield_function(const dealii::SymmetricTensor<2, 3> &,
+                                       const dealii::SymmetricTensor<2, 3> &,
+                                       const double,
+                                       const double,
+                                       const PhaseStep &) const override
+    {
+      return -1.;
+    }
   };
 
   /**
@@ -175,6 +285,9 @@ namespace ausroll::material
   public:
     /** Model from subsection `Material`. */
     explicit VonMisesPlasticity(const MaterialParameters &parameters);
+    using PlasticityModel::project_onto_yield_surface;
+    using PlasticityModel::return_map;
+    using PlasticityModel::yield_function;
 
     ReturnMappingResult return_map(const dealii::SymmetricTensor<2, 3> &trial_stress,
                                    const dealii::SymmetricTensor<2, 3> &back_stress_old,
@@ -202,6 +315,36 @@ namespace ausroll::material
     dealii::SymmetricTensor<4, 3> back_stress_sensitivity(const ReturnMappingResult &result,
                                                           const double temperature) const override;
 
+  protected:
+    /**
+     * Radial return with TRIP and the mixture rule. With c = 1 + 2 mu kappa the equations
+     * dev sigma = (dev sigma_trial - 2 mu Delta eps_p) / c, beta = beta_old + 2/3 H_k Delta
+     * eps_p and Delta eps_p along dev sigma - beta reduce to one scalar consistency condition in
+     * eta* = dev sigma_trial / c - beta_old: sqrt(3/2) |eta*| - (3 mu / c + H_k) dgamma -
+     * sigma_y,mix(alpha + dgamma) = 0 (doc/theory.md, "TRIP and the mixture rule").
+     */
+    ReturnMappingResult
+    transforming_return_map(const dealii::SymmetricTensor<2, 3> &trial_stress,
+                            const dealii::SymmetricTensor<2, 3> &back_stress_old,
+                            const double                         alpha_old,
+                            const double                         temperature,
+                            const PhaseStep                     &phases) const override;
+
+    /** sqrt(3/2) |dev sigma - beta| - sigma_y,mix(alpha). */
+    double transforming_yield_function(const dealii::SymmetricTensor<2, 3> &stress,
+                                       const dealii::SymmetricTensor<2, 3> &back_stress,
+                                       const double                         alpha,
+                                       const double                         temperature,
+                                       const PhaseStep                     &phases) const override;
+
+    /** Radial scaling onto the yield surface of the mixture. */
+    dealii::SymmetricTensor<2, 3>
+    transforming_projection(const dealii::SymmetricTensor<2, 3> &stress,
+                            const dealii::SymmetricTensor<2, 3> &back_stress,
+                            const double                         alpha,
+                            const double                         temperature,
+                            const PhaseStep                     &phases) const override;
+
   private:
     /** The isotropic hardening law at @p temperature. */
     HardeningLaw hardening_at(const double temperature) const
@@ -215,6 +358,9 @@ namespace ausroll::material
     double       kinematic_modulus; ///< H_k (constant case)
   };
 
-  /** The plasticity model selected by `Material/Yield criterion`. */
-  std::unique_ptr<PlasticityModel> create_plasticity_model(const MaterialParameters &parameters);
+  /** The plasticity model selected by `Material/Yield criterion`, with TRIP and the mixture rule
+      of @p transformation (the `Phases` entries) if given and on. */
+  std::unique_ptr<PlasticityModel>
+  create_plasticity_model(const MaterialParameters                 &parameters,
+                          const TransformationPlasticityParameters *transformation = nullptr);
 } // namespace ausroll::material

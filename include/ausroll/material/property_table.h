@@ -28,13 +28,15 @@ namespace ausroll::material
     /**
      * Parse @p text (see the class description) for entry @p entry (its full path, for messages);
      * @p input_directory resolves `file:` names. With @p positive every value must be > 0,
-     * with @p non_negative >= 0; throws InputError naming the entry otherwise.
+     * with @p non_negative >= 0; throws InputError naming the entry otherwise. @p argument
+     * names the table's first column in the messages (a table in depth: "depth").
      */
     static PropertyTable parse(const std::string &text,
                                const std::string &entry,
                                const std::string &input_directory,
                                const bool         positive,
-                               const bool         non_negative = false);
+                               const bool         non_negative = false,
+                               const std::string &argument = "temperature");
 
     /** p(T). */
     double value(const double temperature) const;

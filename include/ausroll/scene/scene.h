@@ -146,9 +146,10 @@ namespace ausroll::scene
     void setup_thermal();
     /** Temperature at t = 0 on the field and the material points (not when resuming). */
     void initialize_temperature();
-    /** `Phases/Carbon content` at the material points, all austenite (InputError outside 0 to
-        2.1 wt%); at set-up (before anything is written) and again after the initial refinement
-        cycles (not when resuming: the checkpoint holds it). */
+    /** `Phases/Carbon content` at the material points (material::CarbonProfile, its depth below
+        `Phases/Case boundaries`, by default the dies' Candidate boundaries), all austenite
+        (InputError outside 0 to 2.1 wt%); at set-up (before anything is written) and again after
+        the initial refinement cycles (not when resuming: the checkpoint holds it). */
     void initialize_carbon();
     /** Isothermal split, thermal half: the heat equation over the converged mechanical @p step
         (before the material points are committed), then the new temperature at the points. */

@@ -17,6 +17,7 @@
 #include <ausroll/scene/coupling_parameters.h>
 #include <ausroll/solver/loading_parameters.h>
 #include <ausroll/solver/solver_parameters.h>
+#include <ausroll/solver/stage_parameters.h>
 #include <ausroll/thermal/thermal_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -47,6 +48,7 @@ namespace ausroll::scene
     thermal::ThermalParameters             thermal;                ///< `Thermal`
     CouplingParameters                     coupling;               ///< `Coupling`
     material::PhaseParameters              phases;                 ///< `Phases`
+    solver::StageParameters                stages;                 ///< `Stages`
     /** Every entry "Section/Entry" -> value as parsed (stored in checkpoints, compared on resume).
      */
     std::map<std::string, std::string> entries;

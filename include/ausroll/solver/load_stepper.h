@@ -11,10 +11,12 @@
 #include <ausroll/contact/contact_strategy.h>
 #include <ausroll/solver/loading_parameters.h>
 #include <ausroll/solver/newton_solver.h>
+#include <ausroll/solver/stage_parameters.h>
 
 #include <deal.II/base/conditional_ostream.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ausroll::solver
@@ -130,6 +132,14 @@ namespace ausroll::solver
     /** End time / Number of steps. */
     double nominal_step_size() const;
 
+    /**
+     * Step through the process stages @p stages (`Stages`, kept by reference; not called
+     * without stages): steps end on each stage's end and its grid (stage_targets()), a stage
+     * begins with its own step size, and the step-size control, cutbacks and the minimum step
+     * act within the stage's nominal step.
+     */
+    void set_stages(const StageParameters *stages);
+
     /** `Minimum step fraction` of the nominal step: the smallest step a cutback or the
         adaptive step control gives. */
     double minimum_step_size() const;
@@ -163,6 +173,22 @@ namespace ausroll::solver
     SolveCount solve_count;
 
   private:
+    /**
+     * With stages: the next grid point after @p t_done and the end of the stage the step from
+     * @p t_done lies in. Where the stepper enters a stage, it logs the stage (at its start:
+     * "Stage k (name): t = a to b, step h", sets @p dt to the stage's step and solves the
+     * stage's first step without the predictor (the last stage's increment says nothing of the
+     * path under the new conditions); inside it, as
+     * after a resume: "resuming in stage k (name)").
+     */
+    std::pair<double, double> stage_targets(const double t_done, double &dt);
+
+    /** The nominal step of the stage the stepper is in, or End time / Number of steps. */
+    double current_nominal_step() const;
+
+    const StageParameters      *stages = nullptr;   ///< `Stages`, or none
+    int                         current_stage = -1; ///< the stage of the last step (-1: none)
+    double                      stage_step = 0.;    ///< its nominal step
     LoadingParameters           loading;
     std::string                 output_directory;
     dealii::ConditionalOStream &log;

@@ -108,6 +108,14 @@ namespace ausroll::thermal
                     const PointStorage            &points,
                     const std::vector<Contact>    &contacts);
 
+    /**
+     * Make @p stage_conditions the boundary conditions of the next solves (a process stage's:
+     * the `Thermal` conditions with other values or heat transfer coefficients; same boundary
+     * ids and types). Expressions that cannot be parsed are an InputError naming @p entry.
+     */
+    void set_conditions(const std::vector<ThermalCondition> &stage_conditions,
+                        const std::string                   &entry);
+
     /** Accept the last solve: committed_temperature = temperature. */
     void commit();
 
@@ -173,13 +181,15 @@ namespace ausroll::thermal
     /** Hanging nodes and prescribed temperatures at time @p t. */
     void make_constraints(const double t);
 
-    dealii::parallel::distributed::Triangulation<dim>        &triangulation; ///< the workpiece mesh
-    const dealii::Mapping<dim>                               &mapping;       ///< its mapping
-    const dealii::Quadrature<dim>                             quadrature;    ///< the mechanics'
-    Kinematics                                                kinematics;    ///< volume factor, F
-    dealii::AffineConstraints<double>                         constraints; ///< hanging + Dirichlet
-    dealii::TrilinosWrappers::SparseMatrix                    matrix; ///< M/dt + K (+ convection)
-    Vector                                                    rhs;    ///< owned
+    dealii::parallel::distributed::Triangulation<dim> &triangulation; ///< the workpiece mesh
+    const dealii::Mapping<dim>                        &mapping;       ///< its mapping
+    const dealii::Quadrature<dim>                      quadrature;    ///< the mechanics'
+    Kinematics                                         kinematics;    ///< volume factor, F
+    dealii::AffineConstraints<double>                  constraints;   ///< hanging + Dirichlet
+    dealii::TrilinosWrappers::SparseMatrix             matrix;        ///< M/dt + K (+ convection)
+    Vector                                             rhs;           ///< owned
+    /** The boundary conditions in force: `Thermal/Condition k`, or a stage's (set_conditions()). */
+    std::vector<ThermalCondition>                             conditions;
     std::vector<std::unique_ptr<dealii::FunctionParser<dim>>> values; ///< per condition, of t
     std::vector<std::unique_ptr<dealii::FunctionParser<1>>>   die_temperatures; ///< per die, of t
     std::unique_ptr<dealii::parallel::distributed::SolutionTransfer<dim, Vector>> transfer;

@@ -9,3 +9,28 @@ configure_file(${AUSROLL_CHECKS_DIR}/scenes/gear_ausrolling_np2.prm.in
   ${CMAKE_CURRENT_BINARY_DIR}/gear_ausrolling_np2.prm @ONLY)
 ausroll_add_parallel_check(NAME gear_ausrolling_np2
   PRM ${CMAKE_CURRENT_BINARY_DIR}/gear_ausrolling_np2.prm HISTORY out/history.csv)
+
+# TRIP and the mixture rule of the yield stress (check_thermal.py cases trip and mixture): a block
+# cooled through Ms under a constant uniaxial stress against Leblond's closed form K sigma phi(f)
+# (small strain, 1e-6; finite strain: the discrete law, 1e-8), and compressed while it transforms
+# against the linear mixture of the yield stress in all four kinematics (1e-8). About 2 s.
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/thermal_trip)
+add_test(NAME check/thermal_trip
+  COMMAND ${Python3_EXECUTABLE} ${AUSROLL_CHECKS_DIR}/check_thermal.py $<TARGET_FILE:ausroll>
+          ${CMAKE_SOURCE_DIR} trip mixture
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/thermal_trip)
+set_tests_properties(check/thermal_trip PROPERTIES LABELS check TIMEOUT 900)
+
+# The carburized case: a free bar with a carbon gradient through its thickness (Phases/Carbon
+# content in the depth below one face) transforming to martensite on cooling, elastic: curvature,
+# mean strain and axial stress against the beam with an eigenstrain, 1 % (measured 0.26 %)
+# (tests/checks/check_carburized_bar.py). About 3 s wall.
+ausroll_add_script_check(NAME carburized_bar SCRIPT ${AUSROLL_CHECKS_DIR}/check_carburized_bar.py)
+set_property(TEST check/carburized_bar APPEND PROPERTY LABELS quick)
+
+# Process stages (tests/checks/check_stages.py on scenes/stage_quench.prm: a block quenched into
+# a bath, held, cooled in air: the lumped closed form per stage, the stage ends as step ends, the
+# history's stage column, one stage against none, a resume in the cooling stage on 1 and 2
+# ranks). About 9 s.
+ausroll_add_script_check(NAME stages SCRIPT ${AUSROLL_CHECKS_DIR}/check_stages.py)
+set_tests_properties(check/stages PROPERTIES PROCESSORS 2)

@@ -8,7 +8,7 @@
  * `template <int dim> std::unique_ptr<Postprocessor<dim>> make_x(const PostprocessorContext &)`
  * (nullptr when it does not apply to the run) and
  * `AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_x, "x", position, "...")` with a
- * position after the last one (130 today, `phases`) so that existing histories keep their columns.
+ * position after the last one (140 today, `stage`) so that existing histories keep their columns.
  */
 #pragma once
 
@@ -20,6 +20,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace ausroll::io
 {
@@ -34,6 +35,8 @@ namespace ausroll::io
     bool         thermal = false;   ///< a temperature field is solved (time in s, its columns)
     bool         phases = false;    ///< `Phases` enabled (phase fraction columns)
     bool         bainite = false;   ///< bainite kinetics given (bainite columns)
+    /** `Stages/Stage k/End time` of the stages (empty: no stages, no stage column). */
+    std::vector<double> stage_end_times = {};
   };
 
   /** A function making one postprocessor of a run, or nullptr if it does not apply. */
@@ -73,8 +76,8 @@ namespace ausroll::io
    * The postprocessors of a run made from @p context on @p comm: every registered one that
    * applies, in the order of their positions (today: step statistics, applied pressures, monitor
    * points, reaction forces, die forces, yield excess, line probes, boundary profile, contact
-   * nodes, cell averages, die geometry, temperature, phases). Two postprocessors with the same
-   * position are an internal error (std::logic_error).
+   * nodes, cell averages, die geometry, temperature, phases, stage). Two postprocessors with the
+   * same position are an internal error (std::logic_error).
    */
   template <int dim>
   std::unique_ptr<PostprocessorSet<dim>>
