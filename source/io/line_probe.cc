@@ -66,9 +66,8 @@ namespace ausroll::io
                      const unsigned int              dim,
                      const std::vector<std::string> &line_probe_names)
   {
-    const std::string                    entry = "Postprocess/Depth probes";
-    const std::string                    form = dim == 2 ? "'name: x, y, depth, n'"
-                                                         : "'name: x, y, z, depth, n'";
+    const std::string entry = "Postprocess/Depth probes";
+    const std::string form = dim == 2 ? "'name: x, y, depth, n'" : "'name: x, y, z, depth, n'";
     std::vector<DepthProbeSpecification> probes;
     std::vector<std::string>             names;
     for (const std::string &item : split_and_trim(specification, ';'))
@@ -110,10 +109,8 @@ namespace ausroll::io
 
   template <int dim>
   LineProbes<dim>::LineProbes(const std::string &specification, const unsigned int n_q_points_1d)
-      : LineProbes(parse_line_probes(specification, dim),
-                   n_q_points_1d,
-                   "Postprocess/Line probes",
-                   "probe")
+      : LineProbes(
+          parse_line_probes(specification, dim), n_q_points_1d, "Postprocess/Line probes", "probe")
   {
   }
 
@@ -196,8 +193,8 @@ namespace ausroll::io
         if (owner[i] == n_ranks)
         {
           std::ostringstream msg;
-          msg << entry << ": point (" << probe.samples[i].position << ") of probe '"
-              << probe.name << "' is outside the workpiece";
+          msg << entry << ": point (" << probe.samples[i].position << ") of probe '" << probe.name
+              << "' is outside the workpiece";
           throw InputError(msg.str());
         }
         probe.samples[i].local = owner[i] == rank;
@@ -291,8 +288,8 @@ namespace ausroll::io
         continue;
 
       std::ostringstream name;
-      name << directory << "/" << prefix << "_" << probe.name << "_" << std::setw(4) << std::setfill('0')
-           << counter << ".csv";
+      name << directory << "/" << prefix << "_" << probe.name << "_" << std::setw(4)
+           << std::setfill('0') << counter << ".csv";
       std::ofstream out(name.str());
       out << "time,s,x,y" << (dim == 3 ? ",z" : "") << ",ux,uy" << (dim == 3 ? ",uz" : "")
           << ",stress_xx,stress_yy,stress_zz,stress_xy,von_mises_stress,equivalent_plastic_strain";

@@ -106,8 +106,7 @@ namespace ausroll::io
     line_probes = prm.get("Line probes");
     depth_probes = prm.get("Depth probes");
     depth_probe_boundaries.clear();
-    for (const std::string &id :
-         Utilities::split_string_list(prm.get("Depth probe boundaries")))
+    for (const std::string &id : Utilities::split_string_list(prm.get("Depth probe boundaries")))
       depth_probe_boundaries.push_back(Utilities::string_to_int(id));
     boundary_profile.parse_parameters(prm);
     prm.leave_subsection();

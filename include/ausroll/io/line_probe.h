@@ -114,11 +114,11 @@ namespace ausroll::io
     };
     struct Probe
     {
-      std::string           name;
-      dealii::Point<dim>    start, end;
-      std::vector<Sample>   samples;
-      bool                  framed = false; ///< the stress also in the surface frame
-      dealii::Tensor<1, 3>  n, t, w;        ///< that frame: normal, tangents (3D: t in x-y)
+      std::string          name;
+      dealii::Point<dim>   start, end;
+      std::vector<Sample>  samples;
+      bool                 framed = false; ///< the stress also in the surface frame
+      dealii::Tensor<1, 3> n, t, w;        ///< that frame: normal, tangents (3D: t in x-y)
     };
     std::vector<Probe>                      probes;
     std::string                             entry;  ///< the entry named in messages

@@ -61,7 +61,7 @@ namespace ausroll::io
     std::string line_probes;         ///< `Line probes` "name: x0, y0, x1, y1, n; ..."
     std::string depth_probes;        ///< `Depth probes` "name: x, y, depth, n; ..."
     std::vector<unsigned int> depth_probe_boundaries; ///< `Depth probe boundaries` (empty: all)
-    BoundaryProfileParameters boundary_profile; ///< subsection `Boundary profile`
+    BoundaryProfileParameters boundary_profile;       ///< subsection `Boundary profile`
 
     /** Declare subsection `Postprocess`. */
     static void declare_parameters(dealii::ParameterHandler &prm);

@@ -68,7 +68,7 @@ namespace ausroll::io::postprocess
         Point<dim> p;
         for (unsigned int k = 0; k < dim; ++k)
           p[k] = d.point[k];
-        const auto     foot = outline.nearest(p);
+        const auto             foot = outline.nearest(p);
         LineProbeSpecification line;
         line.name = d.name;
         line.n_points = d.n_points;
