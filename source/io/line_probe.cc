@@ -176,7 +176,12 @@ namespace ausroll::io
       {
         Sample &s = probe.samples[i];
         s.local = false;
-        if (const auto found = owned_cell_around_point(mapping, dof_handler, s.position))
+        // a point on a curved boundary (the start of a depth probe) may lie just outside the
+        // mapped cells: then the nearest point of a cell within 1 % of its size
+        auto found = owned_cell_around_point(mapping, dof_handler, s.position);
+        if (!found)
+          found = owned_cell_around_point(mapping, dof_handler, s.position, 1e-2);
+        if (found)
         {
           s.cell = found->first;
           s.unit_point = found->second;

@@ -13,10 +13,13 @@ p = 104 MPa). Two depth probes:
 Along both, the stress in the frame of the surface is compared with Lame's closed form:
 stress_nn = sigma_rr = A - B / r^2, stress_tt = sigma_tt = A + B / r^2 (A = p a^2 / (b^2 - a^2),
 B = A b^2), stress_nt = 0. Tolerance 0.5 % of p: the stress of a probe point is the Lagrange
-interpolation of the 3 x 3 material points of its cell (Q2 on 16 x 8 cells of 12.5 mm: the
-interpolated stress departs from the exact one by up to 0.3 % of p; the radial line probe of the
-scene, the same interpolation along the x axis, shows the same error, which is the FE error and
-not the frame). The depth column s is the distance below the surface (0 ... depth).
+interpolation of the 3 x 3 material points of its cell (Q2 on 16 x 8 cells of 12.5 mm), which
+departs from the exact stress by up to 0.42 % of p at the bore (measured); the radial line probe
+of the scene, the same interpolation along the x axis in sigma_xx and sigma_yy, departs by 0.41 %
+there, so the difference is the FE error, not the frame (a wrong frame would mix sigma_rr and
+sigma_tt, 180 % of p apart at the bore). The foot and the end of each probe are checked to 1e-5 mm:
+the distance to the outline is exact to about 1e-12 of its size, but along the surface the foot is
+located to 1.5e-8 of the 78 mm coarse face (Brent's bracket in the face parameter), 1.2e-6 mm. The depth column s is the distance below the surface.
 """
 
 import csv
@@ -60,16 +63,18 @@ def main():
         with open(os.path.join("out", f"depth_{name}_0001.csv")) as f:
             rows = list(csv.DictReader(f))
         first, last = rows[0], rows[-1]
+        # positions to 1e-5 mm: Brent finds the face parameter to 1.5e-8 of the 78 mm coarse face
+        # (1.2e-6 mm along the surface) and the CSV holds 10 significant digits (1e-7 mm)
+        ca, sa = math.cos(math.radians(angle)), math.sin(math.radians(angle))
         x0, y0 = float(first["x"]), float(first["y"])
-        check(f"{name}: starts on the surface at {angle} deg",
-              abs(math.hypot(x0, y0) - r0) < 1e-9
-              and abs(math.degrees(math.atan2(y0, x0)) - angle) < 1e-9,
-              f"r = {math.hypot(x0, y0):.12f}, angle {math.degrees(math.atan2(y0, x0)):.12f}")
+        off = math.hypot(x0 - r0 * ca, y0 - r0 * sa)
+        check(f"{name}: starts at the foot on the circle at {angle} deg (1e-5 mm)", off < 1e-5,
+              f"{off:.2e} mm from ({r0 * ca:.9f}, {r0 * sa:.9f})")
         x1, y1 = float(last["x"]), float(last["y"])
-        check(f"{name}: runs along the normal for its depth",
-              abs(math.hypot(x1, y1) - (r0 + sign * depth)) < 1e-9
-              and abs(float(last["s"]) - depth) < 1e-9,
-              f"end r = {math.hypot(x1, y1):.12f}, s = {float(last['s'])}")
+        r1 = r0 + sign * depth
+        off = math.hypot(x1 - r1 * ca, y1 - r1 * sa)
+        check(f"{name}: ends {depth} mm along the normal (1e-5 mm), s = depth",
+              off < 1e-5 and abs(float(last["s"]) - depth) < 1e-6, f"{off:.2e} mm, s = {last['s']}")
         worst = 0.0
         for row in rows:
             rr = math.hypot(float(row["x"]), float(row["y"]))
