@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace ausroll::geometry
 {
@@ -44,6 +45,7 @@ namespace ausroll::geometry
           continue;
         found[it - ids.begin()] = true;
         Face f;
+        f.interior = cell->center();
         for (const unsigned int v : face->vertex_indices())
           f.vertices.push_back(face->vertex(v));
         // A face that carries the cells' transfinite interpolation (the flat ends of a cylinder
@@ -142,10 +144,20 @@ namespace ausroll::geometry
   double BoundaryDepth<dim>::refine(const Face                &face,
                                     const Point<dim>          &p,
                                     const std::vector<double> &d,
-                                    const double               bound) const
+                                    const double               bound,
+                                    double                    *foot_u,
+                                    double                    *foot_v) const
   {
     using boost::math::tools::brent_find_minima;
-    double       best = *std::min_element(d.begin(), d.end());
+    double best = *std::min_element(d.begin(), d.end());
+    // the parameters of the nearest point so far: the nearest sample
+    {
+      const unsigned int k = std::min_element(d.begin(), d.end()) - d.begin();
+      if (foot_u != nullptr)
+        *foot_u = double(k % (n + 1)) / n;
+      if (foot_v != nullptr)
+        *foot_v = dim == 2 ? 0. : double(k / (n + 1)) / n;
+    }
     const double step = 1. / n;
     const auto   bracket = [&](const double x)
     { return std::make_pair(std::max(0., x - step), std::min(1., x + step)); };
@@ -159,7 +171,12 @@ namespace ausroll::geometry
         const auto squared = [&](const double u) { return p.distance_square(point(face, u, 0.)); };
         std::uintmax_t iterations = brent_iterations;
         const auto     minimum = brent_find_minima(squared, lo, hi, brent_bits, iterations);
-        best = std::min(best, std::sqrt(minimum.second));
+        if (std::sqrt(minimum.second) < best)
+        {
+          best = std::sqrt(minimum.second);
+          if (foot_u != nullptr)
+            *foot_u = minimum.first;
+        }
       }
     }
     else
@@ -200,7 +217,14 @@ namespace ausroll::geometry
             if (std::sqrt(before) - std::sqrt(current) <= 1e-15 * extent)
               break;
           }
-          best = std::min(best, std::sqrt(current));
+          if (std::sqrt(current) < best)
+          {
+            best = std::sqrt(current);
+            if (foot_u != nullptr)
+              *foot_u = u;
+            if (foot_v != nullptr)
+              *foot_v = v;
+          }
         }
     }
     return best;
@@ -234,6 +258,59 @@ namespace ausroll::geometry
       if (nearest[f] - faces[f].gap <= best)
         best = std::min(best, refine(faces[f], p, distances[f], best));
     return best;
+  }
+
+  template <int dim>
+  typename BoundaryDepth<dim>::Foot BoundaryDepth<dim>::nearest(const Point<dim> &p) const
+  {
+    // as depth(), keeping the face and parameters of the nearest point
+    std::vector<std::vector<double>> distances(faces.size());
+    std::vector<double>              closest(faces.size());
+    for (unsigned int f = 0; f < faces.size(); ++f)
+    {
+      distances[f].resize(faces[f].samples.size());
+      for (unsigned int k = 0; k < faces[f].samples.size(); ++k)
+        distances[f][k] = p.distance(faces[f].samples[k]);
+      closest[f] = *std::min_element(distances[f].begin(), distances[f].end());
+    }
+    double       best = std::numeric_limits<double>::max(), best_u = 0., best_v = 0.;
+    unsigned int best_face = 0;
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      if (closest[f] - faces[f].gap <= best)
+      {
+        double       u = 0., v = 0.;
+        const double distance = refine(faces[f], p, distances[f], best, &u, &v);
+        if (distance < best)
+          std::tie(best, best_face, best_u, best_v) = std::make_tuple(distance, f, u, v);
+      }
+    const Face &face = faces[best_face];
+    Foot        foot;
+    foot.point = point(face, best_u, best_v);
+    foot.distance = best;
+    // the face's tangent(s) by central differences (one-sided at its ends)
+    const double h = 1e-5;
+    const auto   tangent = [&](const unsigned int direction)
+    {
+      const double u0 = direction == 0 ? std::max(0., best_u - h) : best_u;
+      const double u1 = direction == 0 ? std::min(1., best_u + h) : best_u;
+      const double v0 = direction == 1 ? std::max(0., best_v - h) : best_v;
+      const double v1 = direction == 1 ? std::min(1., best_v + h) : best_v;
+      return point(face, u1, v1) - point(face, u0, v0);
+    };
+    Tensor<1, dim> normal;
+    if constexpr (dim == 2)
+    {
+      const Tensor<1, dim> t = tangent(0);
+      normal[0] = -t[1];
+      normal[1] = t[0];
+    }
+    else
+      normal = cross_product_3d(tangent(0), tangent(1));
+    normal /= normal.norm();
+    if (normal * (face.interior - foot.point) < 0.)
+      normal *= -1.;
+    foot.inward_normal = normal;
+    return foot;
   }
 
   template class BoundaryDepth<2>;

@@ -8,6 +8,7 @@
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/fe/fe_values.h>
 
 #include <algorithm>
@@ -60,11 +61,69 @@ namespace ausroll::io
     return probes;
   }
 
+  std::vector<DepthProbeSpecification>
+  parse_depth_probes(const std::string              &specification,
+                     const unsigned int              dim,
+                     const std::vector<std::string> &line_probe_names)
+  {
+    const std::string entry = "Postprocess/Depth probes";
+    const std::string form = dim == 2 ? "'name: x, y, depth, n'" : "'name: x, y, z, depth, n'";
+    std::vector<DepthProbeSpecification> probes;
+    std::vector<std::string>             names;
+    for (const std::string &item : split_and_trim(specification, ';'))
+    {
+      const auto colon = item.find(':');
+      if (colon == std::string::npos || colon == 0)
+        throw InputError(entry + ": '" + item + "' must read " + form);
+      DepthProbeSpecification        probe;
+      const std::vector<std::string> before = split_and_trim(item.substr(0, colon), '\n');
+      probe.name = before.empty() ? std::string() : before.front();
+      require_label(probe.name, entry);
+      if (std::find(line_probe_names.begin(), line_probe_names.end(), probe.name)
+          != line_probe_names.end())
+        throw InputError(entry + ": the name '" + probe.name
+                         + "' is also a line probe's (Postprocess/Line probes)");
+      const std::vector<double> v = parse_double_list(item.substr(colon + 1), entry);
+      if (v.size() == dim + 2 && v.back() > max_probe_points)
+      {
+        std::ostringstream n;
+        n << v.back();
+        throw InputError(entry + ": probe '" + probe.name + "' has " + n.str()
+                         + " points, more than ausroll accepts (" + std::to_string(max_probe_points)
+                         + ")");
+      }
+      if (v.size() != dim + 2 || v.back() < 2 || v.back() != static_cast<unsigned int>(v.back()))
+        throw InputError(entry + ": '" + item + "' must read " + form
+                         + " (n: a number of points >= 2)");
+      if (!(v[dim] > 0.))
+        throw InputError(entry + ": probe '" + probe.name + "' needs a positive depth");
+      probe.point.assign(v.begin(), v.begin() + dim);
+      probe.depth = v[dim];
+      probe.n_points = static_cast<unsigned int>(v.back());
+      probes.push_back(probe);
+      names.push_back(probe.name);
+    }
+    require_unique_labels(names, entry);
+    return probes;
+  }
+
   template <int dim>
   LineProbes<dim>::LineProbes(const std::string &specification, const unsigned int n_q_points_1d)
-      : interpolation(n_q_points_1d)
+      : LineProbes(
+          parse_line_probes(specification, dim), n_q_points_1d, "Postprocess/Line probes", "probe")
   {
-    for (const LineProbeSpecification &p : parse_line_probes(specification, dim))
+  }
+
+  template <int dim>
+  LineProbes<dim>::LineProbes(const std::vector<LineProbeSpecification> &lines,
+                              const unsigned int                         n_q_points_1d,
+                              const std::string                         &entry,
+                              const std::string                         &prefix)
+      : interpolation(n_q_points_1d)
+      , entry(entry)
+      , prefix(prefix)
+  {
+    for (const LineProbeSpecification &p : lines)
     {
       Probe probe;
       probe.name = p.name;
@@ -72,6 +131,26 @@ namespace ausroll::io
       {
         probe.start[d] = p.start[d];
         probe.end[d] = p.end[d];
+      }
+      if (p.normal.size() == dim)
+      {
+        // the frame of the surface: n; t in the plane of the section (2D) or in the x-y plane
+        // (3D: along the profile of a body extruded in z); w = n x t
+        probe.framed = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          probe.n[d] = p.normal[d];
+        probe.n /= probe.n.norm();
+        Tensor<1, 3> z;
+        z[2] = 1.;
+        probe.t = cross_product_3d(z, probe.n);
+        if (probe.t.norm() < 1e-8) // a normal along z (3D): t along x
+        {
+          Tensor<1, 3> x;
+          x[0] = 1.;
+          probe.t = cross_product_3d(probe.n, cross_product_3d(x, probe.n));
+        }
+        probe.t /= probe.t.norm();
+        probe.w = cross_product_3d(probe.n, probe.t);
       }
       const unsigned int n = p.n_points;
       for (unsigned int i = 0; i < n; ++i)
@@ -97,7 +176,12 @@ namespace ausroll::io
       {
         Sample &s = probe.samples[i];
         s.local = false;
-        if (const auto found = owned_cell_around_point(mapping, dof_handler, s.position))
+        // a point on a curved boundary (the start of a depth probe) may lie just outside the
+        // mapped cells: then the nearest point of a cell within 1 % of its size
+        auto found = owned_cell_around_point(mapping, dof_handler, s.position);
+        if (!found)
+          found = owned_cell_around_point(mapping, dof_handler, s.position, 1e-2);
+        if (found)
         {
           s.cell = found->first;
           s.unit_point = found->second;
@@ -114,8 +198,8 @@ namespace ausroll::io
         if (owner[i] == n_ranks)
         {
           std::ostringstream msg;
-          msg << "Postprocess/Line probes: point (" << probe.samples[i].position << ") of probe '"
-              << probe.name << "' is outside the workpiece";
+          msg << entry << ": point (" << probe.samples[i].position << ") of probe '" << probe.name
+              << "' is outside the workpiece";
           throw InputError(msg.str());
         }
         probe.samples[i].local = owner[i] == rank;
@@ -178,6 +262,30 @@ namespace ausroll::io
           row.push_back(u[0][d]);
         row.insert(row.end(), fields, fields + 6);
         row.insert(row.end(), more.begin(), more.end());
+        if (probe.framed)
+        {
+          SymmetricTensor<2, 3> sigma;
+          sigma[0][0] = fields[0];
+          sigma[1][1] = fields[1];
+          sigma[2][2] = fields[2];
+          sigma[0][1] = fields[3];
+          if (dim == 3)
+          {
+            sigma[0][2] = more[0];
+            sigma[1][2] = more[1];
+          }
+          const auto &n = probe.n, &t = probe.t, &w = probe.w;
+          row.push_back(n * (sigma * n));
+          row.push_back(t * (sigma * t));
+          if (dim == 3)
+            row.push_back(w * (sigma * w));
+          row.push_back(n * (sigma * t));
+          if (dim == 3)
+          {
+            row.push_back(n * (sigma * w));
+            row.push_back(t * (sigma * w));
+          }
+        }
         rows.push_back(row);
       }
       const std::vector<std::vector<double>> all = gather_sorted_rows(comm, rows);
@@ -185,8 +293,8 @@ namespace ausroll::io
         continue;
 
       std::ostringstream name;
-      name << directory << "/probe_" << probe.name << "_" << std::setw(4) << std::setfill('0')
-           << counter << ".csv";
+      name << directory << "/" << prefix << "_" << probe.name << "_" << std::setw(4)
+           << std::setfill('0') << counter << ".csv";
       std::ofstream out(name.str());
       out << "time,s,x,y" << (dim == 3 ? ",z" : "") << ",ux,uy" << (dim == 3 ? ",uz" : "")
           << ",stress_xx,stress_yy,stress_zz,stress_xy,von_mises_stress,equivalent_plastic_strain";
@@ -194,6 +302,9 @@ namespace ausroll::io
         out << ",stress_" << components[4 + i].first;
       for (const auto &c : components)
         out << ",strain_" << c.first;
+      if (probe.framed)
+        out << (dim == 2 ? ",stress_nn,stress_tt,stress_nt"
+                         : ",stress_nn,stress_tt,stress_ww,stress_nt,stress_nw,stress_tw");
       out << '\n' << std::setprecision(10);
       for (const auto &row : all)
       {

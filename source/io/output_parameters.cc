@@ -77,6 +77,23 @@ namespace ausroll::io
         "Straight lines 'name: x0, y0, x1, y1, n; ...' (reference coordinates, n points) "
         "along which displacement, stress and plastic strain are written to "
         "probe_<name>_NNNN.csv at every VTU output.");
+    prm.declare_entry(
+        "Depth probes",
+        "",
+        Patterns::Anything(),
+        "Lines normal to the initial surface 'name: x, y, depth, n; ...' (3D: x, y, z): each "
+        "starts at the point of the workpiece's initial outline (the boundaries of Depth probe "
+        "boundaries) nearest to (x, y), runs along the inward normal there for depth mm, and "
+        "has n points. Written to depth_<name>_NNNN.csv at every VTU output with the columns "
+        "of a line probe (s = depth below the initial surface) and the stress in the frame of "
+        "the surface: stress_nn (normal), stress_tt (tangential in the section; 3D: in the "
+        "x-y plane), stress_nt (2D; 3D: also stress_ww, stress_nw, stress_tw, w = n x t). For "
+        "residual stress depth profiles below a flank or a rim.");
+    prm.declare_entry("Depth probe boundaries",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids whose faces form the outline of the Depth probes (empty: "
+                      "every boundary of the workpiece).");
     BoundaryProfileParameters::declare_parameters(prm);
     prm.leave_subsection();
   }
@@ -87,6 +104,10 @@ namespace ausroll::io
     monitor_points = prm.get("Monitor points");
     reaction_boundaries = prm.get("Reaction boundaries");
     line_probes = prm.get("Line probes");
+    depth_probes = prm.get("Depth probes");
+    depth_probe_boundaries.clear();
+    for (const std::string &id : Utilities::split_string_list(prm.get("Depth probe boundaries")))
+      depth_probe_boundaries.push_back(Utilities::string_to_int(id));
     boundary_profile.parse_parameters(prm);
     prm.leave_subsection();
   }

@@ -59,9 +59,16 @@ namespace ausroll::scene
     const unsigned int degree = parameters.model.degree;
     geometry::require_dof_estimate(n_cells, degree, dim);
     // the samples of every line probe (checked here, before the memory estimate counts them)
-    double probe_points = 0.;
+    double                   probe_points = 0.;
+    std::vector<std::string> probe_names;
     for (const io::LineProbeSpecification &probe :
          io::parse_line_probes(parameters.postprocess.line_probes, dim))
+    {
+      probe_points += probe.n_points;
+      probe_names.push_back(probe.name);
+    }
+    for (const io::DepthProbeSpecification &probe :
+         io::parse_depth_probes(parameters.postprocess.depth_probes, dim, probe_names))
       probe_points += probe.n_points;
     const double dofs = dim * n_cells * std::pow(double(degree), double(dim));
     const auto  &linear = parameters.solver.linear;
@@ -78,7 +85,7 @@ namespace ausroll::scene
             + ", Model/Polynomial degree = " + std::to_string(degree)
             + ", Model/Quadrature points = " + std::to_string(parameters.model.quadrature_points)
             + (direct ? ", Solver/Linear solver/Type (direct)" : "")
-            + (probe_points > 0. ? ", Postprocess/Line probes" : ""));
+            + (probe_points > 0. ? ", Postprocess/Line probes, Postprocess/Depth probes" : ""));
     return estimate;
   }
 

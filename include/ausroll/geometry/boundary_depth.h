@@ -64,6 +64,22 @@ namespace ausroll::geometry
                   const std::string                &entry,
                   const unsigned int                samples_per_edge = 32);
 
+    /** The point of the outline nearest to a given point, and the outline's normal there. */
+    struct Foot
+    {
+      dealii::Point<dim>     point;         ///< on the outline
+      dealii::Tensor<1, dim> inward_normal; ///< unit normal of its face, into the workpiece
+      double                 distance = 0.; ///< depth() of the given point
+    };
+
+    /**
+     * The foot of @p p on the outline (as depth() finds it) and the unit normal of the face
+     * holding it, pointing into the workpiece (towards the face's coarse cell): from central
+     * differences of the face's points in its parameter(s), accurate to about 1e-10 (at an edge
+     * or corner of the outline: the normal of the face whose point is nearest).
+     */
+    Foot nearest(const dealii::Point<dim> &p) const;
+
     /** Distance of @p p to the outline (mm, >= 0; the same outside the workpiece). */
     double depth(const dealii::Point<dim> &p) const;
 
@@ -84,18 +100,22 @@ namespace ausroll::geometry
       /** 3D: the manifolds of the face's lines 0 to 3 (the Coons patch). */
       std::array<std::unique_ptr<const dealii::Manifold<dim, dim>>, 4> edges;
       std::vector<dealii::Point<dim>> samples; ///< (n+1)^(dim-1), u fastest
-      double gap = 0.; ///< largest distance of a face point from its nearest sample
+      double             gap = 0.; ///< largest distance of a face point from its nearest sample
+      dealii::Point<dim> interior; ///< the centre of the face's coarse cell (inward side)
     };
 
     /** The face point at parameters (u, v) in [0, 1]^(dim-1) (v unused in 2D). */
     dealii::Point<dim> point(const Face &face, const double u, const double v) const;
 
     /** Smallest distance of @p p to @p face from its samples' distances @p d, refined from the
-        local minima of @p d that can be nearer than @p bound (the best distance so far). */
+        local minima of @p d that can be nearer than @p bound (the best distance so far); the
+        face parameters of that nearest point into @p foot_u, @p foot_v if given. */
     double refine(const Face                &face,
                   const dealii::Point<dim>  &p,
                   const std::vector<double> &d,
-                  const double               bound) const;
+                  const double               bound,
+                  double                    *foot_u = nullptr,
+                  double                    *foot_v = nullptr) const;
 
     std::vector<Face> faces;
     unsigned int      n;           ///< sample intervals per face edge

@@ -26,7 +26,30 @@ namespace ausroll::io
     std::vector<double> start;    ///< dim coordinates
     std::vector<double> end;      ///< dim coordinates
     unsigned int        n_points; ///< 2 to max_probe_points
+    /** A unit normal of the surface the line starts on (dim entries; a depth probe), or empty.
+        With it the stress is also written in the frame of that surface (stress_nn, ...). */
+    std::vector<double> normal;
   };
+
+  /** One line of `Postprocess/Depth probes` as written: "name: x, y[, z], depth, n". */
+  struct DepthProbeSpecification
+  {
+    std::string         name;     ///< a label (core's require_label())
+    std::vector<double> point;    ///< dim coordinates: a point at or near the surface
+    double              depth;    ///< length of the probe below the surface (mm, > 0)
+    unsigned int        n_points; ///< 2 to max_probe_points
+  };
+
+  /**
+   * Parse `Postprocess/Depth probes` for @p dim dimensions without allocating any sample:
+   * InputError naming the entry for a malformed item, a bad or repeated name (also one used by a
+   * line probe, @p line_probe_names), a depth that is not positive, or more than
+   * max_probe_points points.
+   */
+  std::vector<DepthProbeSpecification>
+  parse_depth_probes(const std::string              &specification,
+                     unsigned int                    dim,
+                     const std::vector<std::string> &line_probe_names = {});
 
   /**
    * Parse `Postprocess/Line probes` for @p dim dimensions without allocating any sample:
@@ -55,6 +78,14 @@ namespace ausroll::io
   public:
     /** Probes described by @p specification; InputError names `Postprocess/Line probes`. */
     LineProbes(const std::string &specification, const unsigned int n_q_points_1d);
+    /**
+     * Probes @p lines (made elsewhere: the depth probes), written as `<prefix>_<name>_NNNN.csv`;
+     * InputError names @p entry.
+     */
+    LineProbes(const std::vector<LineProbeSpecification> &lines,
+               const unsigned int                         n_q_points_1d,
+               const std::string                         &entry,
+               const std::string                         &prefix);
 
     /** Locate the sample points in the mesh (call after every mesh change). */
     void locate(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &dof_handler);
@@ -83,11 +114,15 @@ namespace ausroll::io
     };
     struct Probe
     {
-      std::string         name;
-      dealii::Point<dim>  start, end;
-      std::vector<Sample> samples;
+      std::string          name;
+      dealii::Point<dim>   start, end;
+      std::vector<Sample>  samples;
+      bool                 framed = false; ///< the stress also in the surface frame
+      dealii::Tensor<1, 3> n, t, w;        ///< that frame: normal, tangents (3D: t in x-y)
     };
     std::vector<Probe>                      probes;
+    std::string                             entry;  ///< the entry named in messages
+    std::string                             prefix; ///< file name prefix: probe or depth
     mechanics::QuadratureInterpolation<dim> interpolation;
   };
 } // namespace ausroll::io

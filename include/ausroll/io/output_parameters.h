@@ -59,7 +59,9 @@ namespace ausroll::io
     std::string monitor_points;      ///< `Monitor points` "name: x, y; ..." -> name_ux, name_uy
     std::string reaction_boundaries; ///< `Reaction boundaries` ids -> reaction_<id>_x, _y
     std::string line_probes;         ///< `Line probes` "name: x0, y0, x1, y1, n; ..."
-    BoundaryProfileParameters boundary_profile; ///< subsection `Boundary profile`
+    std::string depth_probes;        ///< `Depth probes` "name: x, y, depth, n; ..."
+    std::vector<unsigned int> depth_probe_boundaries; ///< `Depth probe boundaries` (empty: all)
+    BoundaryProfileParameters boundary_profile;       ///< subsection `Boundary profile`
 
     /** Declare subsection `Postprocess`. */
     static void declare_parameters(dealii::ParameterHandler &prm);

@@ -1,3 +1,4 @@
+#include <ausroll/geometry/boundary_depth.h>
 #include <ausroll/io/postprocess/field_files.h>
 #include <ausroll/io/postprocess/standard_set.h>
 
@@ -36,6 +37,68 @@ namespace ausroll::io::postprocess
                  input.solution,
                  input.material_points,
                  input.model.is_small_strain());
+  }
+
+  template <int dim>
+  DepthProbeFiles<dim>::DepthProbeFiles(const PostprocessParameters &parameters,
+                                        const unsigned int           n_q_points_1d)
+      : specifications(parse_depth_probes(parameters.depth_probes, dim))
+      , boundaries(parameters.depth_probe_boundaries)
+      , n_q_points_1d(n_q_points_1d)
+  {
+  }
+
+  template <int dim>
+  void DepthProbeFiles<dim>::initialize(const PostprocessInput<dim> &input)
+  {
+    if (!probes)
+    {
+      // the lines, once: from the nearest point of the initial outline along its normal (the
+      // coarse cells and their manifolds are the initial outline on every rank)
+      const Triangulation<dim> &triangulation = input.dof_handler.get_triangulation();
+      std::vector<unsigned int> ids = boundaries;
+      if (ids.empty())
+        for (const types::boundary_id id : triangulation.get_boundary_ids())
+          ids.push_back(id);
+      const geometry::BoundaryDepth<dim> outline(
+          triangulation, ids, "Postprocess/Depth probe boundaries");
+      std::vector<LineProbeSpecification> lines;
+      for (const DepthProbeSpecification &d : specifications)
+      {
+        Point<dim> p;
+        for (unsigned int k = 0; k < dim; ++k)
+          p[k] = d.point[k];
+        const auto             foot = outline.nearest(p);
+        LineProbeSpecification line;
+        line.name = d.name;
+        line.n_points = d.n_points;
+        for (unsigned int k = 0; k < dim; ++k)
+        {
+          line.start.push_back(foot.point[k]);
+          line.end.push_back(foot.point[k] + d.depth * foot.inward_normal[k]);
+          line.normal.push_back(foot.inward_normal[k]);
+        }
+        lines.push_back(line);
+      }
+      probes = std::make_unique<LineProbes<dim>>(
+          lines, n_q_points_1d, "Postprocess/Depth probes", "depth");
+    }
+    probes->locate(input.mapping, input.dof_handler);
+  }
+
+  template <int dim>
+  void DepthProbeFiles<dim>::write_files(const PostprocessInput<dim> &input,
+                                         const std::string           &directory,
+                                         const unsigned int           counter)
+  {
+    probes->write(directory,
+                  counter,
+                  input.time,
+                  input.mapping,
+                  input.dof_handler,
+                  input.solution,
+                  input.material_points,
+                  input.model.is_small_strain());
   }
 
   template <int dim>
@@ -96,9 +159,11 @@ namespace ausroll::io::postprocess
   }
 
   template class LineProbeFiles<2>;
+  template class DepthProbeFiles<2>;
   template class BoundaryProfileFiles<2>;
   template class ContactFiles<2>;
   template class LineProbeFiles<3>;
+  template class DepthProbeFiles<3>;
   template class BoundaryProfileFiles<3>;
   template class ContactFiles<3>;
 
@@ -108,6 +173,14 @@ namespace ausroll::io::postprocess
     std::unique_ptr<Postprocessor<dim>> make_line_probe_files(const PostprocessorContext &c)
     {
       return std::make_unique<LineProbeFiles<dim>>(c.postprocess.line_probes, c.quadrature_points);
+    }
+
+    template <int dim>
+    std::unique_ptr<Postprocessor<dim>> make_depth_probe_files(const PostprocessorContext &c)
+    {
+      if (c.postprocess.depth_probes.find_first_not_of(" \t\n") == std::string::npos)
+        return nullptr;
+      return std::make_unique<DepthProbeFiles<dim>>(c.postprocess, c.quadrature_points);
     }
 
     template <int dim>
@@ -128,6 +201,12 @@ AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_line_probe_files,
                                "line probes",
                                70,
                                "fields along the Line probes, one file per output")
+
+AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_depth_probe_files,
+                               "depth probes",
+                               75,
+                               "fields along the Depth probes, normal to the initial surface, one "
+                               "file per output")
 
 AUSROLL_REGISTER_POSTPROCESSOR(ausroll::io::postprocess::make_boundary_profile_files,
                                "boundary profile",

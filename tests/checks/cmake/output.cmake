@@ -32,3 +32,8 @@ set_tests_properties(check/plot_field_script PROPERTIES LABELS check
 # scenes/cylinder_block_{2d,3d}.prm, 4 steps each. About 10 s CPU.
 ausroll_add_script_check(NAME output_files SCRIPT ${AUSROLL_CHECKS_DIR}/check_output_files.py)
 set_tests_properties(check/output_files PROPERTIES SKIP_RETURN_CODE 77)
+
+# Depth probes (Postprocess/Depth probes) on Lame's thick cylinder: each starts on the exact
+# circle at its angle (1e-9 mm), runs along the normal for its depth, and gives stress_nn,
+# stress_tt, stress_nt = sigma_rr, sigma_tt, 0 of the closed form within 0.5 % of p. About 1 s.
+ausroll_add_script_check(NAME depth_probe SCRIPT ${AUSROLL_CHECKS_DIR}/check_depth_probe.py)

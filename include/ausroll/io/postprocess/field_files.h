@@ -9,6 +9,9 @@
 #include <ausroll/io/line_probe.h>
 #include <ausroll/io/postprocess/interface.h>
 
+#include <memory>
+#include <vector>
+
 namespace ausroll::io::postprocess
 {
   /** `probe_<name>_NNNN.csv` of every `Postprocess/Line probes` line (columns: io::LineProbes). */
@@ -27,6 +30,32 @@ namespace ausroll::io::postprocess
 
   private:
     LineProbes<dim> probes;
+  };
+
+  /**
+   * `depth_<name>_NNNN.csv` of every `Postprocess/Depth probes` line: a line probe from the point
+   * of the initial outline nearest to the given point along the inward normal there (found once,
+   * on the coarse mesh's exact outline: geometry::BoundaryDepth), with the stress also in the
+   * frame of the surface (columns: io::LineProbes).
+   */
+  template <int dim>
+  class DepthProbeFiles : public Postprocessor<dim>
+  {
+  public:
+    /** The probes of `Postprocess/Depth probes` in @p parameters (Gauss rule of @p n_q_points_1d
+        points per direction). */
+    DepthProbeFiles(const PostprocessParameters &parameters, const unsigned int n_q_points_1d);
+    std::string name() const override { return "depth probes"; }
+    void        initialize(const PostprocessInput<dim> &input) override;
+    void        write_files(const PostprocessInput<dim> &input,
+                            const std::string           &directory,
+                            const unsigned int           counter) override;
+
+  private:
+    std::vector<DepthProbeSpecification> specifications;
+    std::vector<unsigned int>            boundaries;
+    unsigned int                         n_q_points_1d;
+    std::unique_ptr<LineProbes<dim>>     probes; ///< made at the first initialize()
   };
 
   /** `profile_NNNN.csv` of `Postprocess/Boundary profile` (columns: io::BoundaryProfile). */
