@@ -191,6 +191,42 @@ TEST(BoundaryDepth, QuarterCylinderMantle)
   EXPECT_LT(error, 1e-9 * 2.);
 }
 
+// nearest(): the foot and the inward normal on the quarter cylinder's mantle, exact: foot
+// (R cos phi, R sin phi, z), normal -(cos phi, sin phi, 0). Foot to 1e-6 of R (Brent locates
+// the face parameter to 1.5e-8, the alternating sweeps in 3D a little worse), normal to 1e-6
+// (central differences of the face points with a parameter step of 1e-5).
+TEST(BoundaryDepth, NearestFootAndNormalOnTheMantle)
+{
+  GeometryParameters p;
+  p.type = WorkpieceType::quarter_cylinder;
+  p.cylinder_radius = 2.;
+  p.cylinder_length = 3.;
+  p.cylinder_layers = 2;
+  p.global_refinements = 1;
+  Triangulation<3> tria;
+  create_workpiece(p, tria);
+  const BoundaryDepth<3> mantle(
+      tria, {boundary_ids_3d::quarter_cylinder::mantle}, "Postprocess/Depth probe boundaries");
+  std::mt19937                           random(11);
+  std::uniform_real_distribution<double> radius(0.5, 2.2), angle(0.05, M_PI / 2. - 0.05),
+      height(0., 3.);
+  double foot_error = 0., normal_error = 0.;
+  for (unsigned int k = 0; k < 50; ++k)
+  {
+    const double   r = radius(random), phi = angle(random), z = height(random);
+    const auto     foot = mantle.nearest(Point<3>(r * std::cos(phi), r * std::sin(phi), z));
+    const Point<3> exact(2. * std::cos(phi), 2. * std::sin(phi), z);
+    Tensor<1, 3>   inward;
+    inward[0] = -std::cos(phi);
+    inward[1] = -std::sin(phi);
+    foot_error = std::max(foot_error, foot.point.distance(exact));
+    normal_error = std::max(normal_error, (foot.inward_normal - inward).norm());
+    EXPECT_NEAR(foot.distance, std::abs(2. - r), 1e-9 * 2.);
+  }
+  EXPECT_LT(foot_error, 1e-6 * 2.);
+  EXPECT_LT(normal_error, 1e-6);
+}
+
 // 3D: the flank of the extruded tooth (lateral id 0) at two heights: the 2D flank points; the
 // symmetry face z = 0 and the face end z = 3 are not in the outline, so the depth is the 2D one.
 TEST(BoundaryDepth, ExtrudedToothFlank)
