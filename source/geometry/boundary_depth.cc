@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <tuple>
 
 namespace ausroll::geometry
 {
@@ -233,6 +232,15 @@ namespace ausroll::geometry
   template <int dim>
   double BoundaryDepth<dim>::depth(const Point<dim> &p) const
   {
+    return closest(p, nullptr, nullptr, nullptr);
+  }
+
+  template <int dim>
+  double BoundaryDepth<dim>::closest(const Point<dim> &p,
+                                     unsigned int     *foot_face,
+                                     double           *foot_u,
+                                     double           *foot_v) const
+  {
     // the nearest sample of every face: an upper bound of the distance, and with the gap a
     // lower bound per face
     std::vector<std::vector<double>> distances(faces.size());
@@ -247,6 +255,7 @@ namespace ausroll::geometry
       upper = std::min(upper, nearest[f]);
     }
     // refine the faces in the order of their nearest sample, skipping those that cannot be nearer
+    // (the first one always passes: its nearest sample is the bound)
     std::vector<unsigned int> order(faces.size());
     for (unsigned int f = 0; f < faces.size(); ++f)
       order[f] = f;
@@ -254,37 +263,32 @@ namespace ausroll::geometry
               order.end(),
               [&](const unsigned int a, const unsigned int b) { return nearest[a] < nearest[b]; });
     double best = upper;
+    bool   first = true;
     for (const unsigned int f : order)
       if (nearest[f] - faces[f].gap <= best)
-        best = std::min(best, refine(faces[f], p, distances[f], best));
+      {
+        double       u = 0., v = 0.;
+        const double d = refine(faces[f], p, distances[f], best, &u, &v);
+        if (foot_face != nullptr && (first || d < best))
+        {
+          *foot_face = f;
+          *foot_u = u;
+          *foot_v = v;
+        }
+        first = false;
+        best = std::min(best, d);
+      }
     return best;
   }
 
   template <int dim>
   typename BoundaryDepth<dim>::Foot BoundaryDepth<dim>::nearest(const Point<dim> &p) const
   {
-    // as depth(), keeping the face and parameters of the nearest point
-    std::vector<std::vector<double>> distances(faces.size());
-    std::vector<double>              closest(faces.size());
-    for (unsigned int f = 0; f < faces.size(); ++f)
-    {
-      distances[f].resize(faces[f].samples.size());
-      for (unsigned int k = 0; k < faces[f].samples.size(); ++k)
-        distances[f][k] = p.distance(faces[f].samples[k]);
-      closest[f] = *std::min_element(distances[f].begin(), distances[f].end());
-    }
-    double       best = std::numeric_limits<double>::max(), best_u = 0., best_v = 0.;
     unsigned int best_face = 0;
-    for (unsigned int f = 0; f < faces.size(); ++f)
-      if (closest[f] - faces[f].gap <= best)
-      {
-        double       u = 0., v = 0.;
-        const double distance = refine(faces[f], p, distances[f], best, &u, &v);
-        if (distance < best)
-          std::tie(best, best_face, best_u, best_v) = std::make_tuple(distance, f, u, v);
-      }
-    const Face &face = faces[best_face];
-    Foot        foot;
+    double       best_u = 0., best_v = 0.;
+    const double best = closest(p, &best_face, &best_u, &best_v);
+    const Face  &face = faces[best_face];
+    Foot         foot;
     foot.point = point(face, best_u, best_v);
     foot.distance = best;
     // the face's tangent(s) by central differences (one-sided at its ends)

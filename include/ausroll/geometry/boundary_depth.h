@@ -107,6 +107,12 @@ namespace ausroll::geometry
     /** The face point at parameters (u, v) in [0, 1]^(dim-1) (v unused in 2D). */
     dealii::Point<dim> point(const Face &face, const double u, const double v) const;
 
+    /** depth() of @p p; with @p foot_face the face and parameters of the nearest point. */
+    double closest(const dealii::Point<dim> &p,
+                   unsigned int             *foot_face,
+                   double                   *foot_u,
+                   double                   *foot_v) const;
+
     /** Smallest distance of @p p to @p face from its samples' distances @p d, refined from the
         local minima of @p d that can be nearer than @p bound (the best distance so far); the
         face parameters of that nearest point into @p foot_u, @p foot_v if given. */
