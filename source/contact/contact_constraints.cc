@@ -1,8 +1,8 @@
 /**
  * @file contact_constraints.cc
- * ContactOperator: the constraints and friction row transforms of the contact nodes, the slip
- * direction tangent, the reactions, the forces on the dies, the output, the packed state of
- * checkpoints and the contact data of the heat equation.
+ * ContactOperator: the constraints and friction row transforms of the contact nodes, the
+ * slipping nodes the slip direction tangent reads, the reactions, the forces on the dies, the
+ * output, the packed state of checkpoints and the contact data of the heat equation.
  */
 #include <ausroll/contact/contact_operator.h>
 #include <ausroll/contact/tangential_components.h>
@@ -29,41 +29,20 @@ namespace ausroll::contact
   } // namespace
 
   template <int dim>
-  unsigned int ContactOperator<dim>::add_slip_direction_tangent(
-      [[maybe_unused]] const AffineConstraints<double> &constraints,
-      TrilinosWrappers::SparseMatrix                   &matrix,
-      TrilinosWrappers::MPI::Vector                    &rhs) const
+  std::vector<typename ContactOperator<dim>::FollowedSlip>
+  ContactOperator<dim>::followed_slips() const
   {
-    unsigned int n_terms = 0;
-    if constexpr (dim == 3)
-    {
-      FullMatrix<double>                   block(dim, dim);
-      dealii::Vector<double>               zero(dim);
-      std::vector<types::global_dof_index> dofs(dim);
-      for (const Node &n : nodes)
-      {
-        if (!n.owned || n.current.status != ContactStatus::slip || n.followed_slip <= 0.
-            || !dies[n.current.die]->friction->switches_stick_slip())
-          continue;
-        // d(T d)/dx = T (P - d (x) d) / |s|, T the slip limit at this assembly's normal force
-        const double T
-            = dies[n.current.die]->friction->slip_limit(n.current.Rn, n.area).value(n.current.Rn);
-        const Tensor<1, dim>  d = slip_vector(n);
-        const Tensor<1, dim> &normal = n.projection.normal;
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            block(i, j)
-                = T / n.followed_slip * ((i == j ? 1. : 0.) - normal[i] * normal[j] - d[i] * d[j]);
-        for (unsigned int c = 0; c < dim; ++c)
-          dofs[c] = n.dofs[c];
-        zero = 0.;
-        constraints.distribute_local_to_global(block, zero, dofs, matrix, rhs, true);
-        ++n_terms;
-      }
-    }
-    matrix.compress(VectorOperation::add);
-    rhs.compress(VectorOperation::add);
-    return Utilities::MPI::sum(n_terms, comm);
+    std::vector<FollowedSlip> slips;
+    for (const Node &n : nodes)
+      if (n.owned && n.current.status == ContactStatus::slip && n.followed_slip > 0.
+          && dies[n.current.die]->friction->switches_stick_slip())
+        slips.push_back(FollowedSlip{
+            n.dofs,
+            n.projection.normal,
+            slip_vector(n),
+            n.followed_slip,
+            dies[n.current.die]->friction->slip_limit(n.current.Rn, n.area).value(n.current.Rn)});
+    return slips;
   }
 
   template <int dim>

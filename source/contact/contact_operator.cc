@@ -32,6 +32,7 @@ namespace ausroll::contact
   ContactOperator<dim>::ContactOperator(const ContactParameters &parameters,
                                         const FrictionContext   &friction)
       : parameters(parameters)
+      , tangents(create_tangent_terms<dim>(parameters))
   {
     for (unsigned int k = 0; k < parameters.dies.size(); ++k)
       dies.push_back(std::make_unique<RigidDie<dim>>(parameters.dies[k], k, friction));
@@ -54,6 +55,8 @@ namespace ausroll::contact
     reversal_tolerance = dim == 2 ? gap_tolerance : 1e-3 * slip_length;
     if (!active())
       return;
+    for (const auto &term : tangents)
+      term->setup(mapping, dof_handler);
 
     const FiniteElement<dim> &fe = dof_handler.get_fe();
     const Quadrature<dim - 1> support(fe.get_unit_face_support_points());
@@ -197,7 +200,7 @@ namespace ausroll::contact
           switch_status(n, closing_status(n));
       }
       // 3D: the direction follows the slip at every iterate, with its derivative in the tangent
-      // (add_slip_direction_tangent()); nested active set: from its first turn at a converged
+      // (SlipDirectionTangent); nested active set: from its first turn at a converged
       // state on (update_statuses()), held before
       n.turned = false;
       n.followed_slip = 0.;

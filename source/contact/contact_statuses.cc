@@ -184,7 +184,7 @@ namespace ausroll::contact
         // and follows the slip here, at the converged state; a turn is a change like a status
         // change (one more pass, counted against `Maximum status changes`), and from then on the
         // direction follows the slip at every iterate with its derivative in the tangent
-        // (add_slip_direction_tangent(): Newton converges quadratically in the direction too),
+        // (SlipDirectionTangent: Newton converges quadratically in the direction too),
         // so a node turns here at most once per step and the converged state has d = s / |s|
         // exactly (n.turned: a turn between the last assembly and this state). Held direction
         // in every pass (the rule before): the direction converged as a fixed point over 4-8

@@ -26,12 +26,7 @@ namespace ausroll::scene
         [this](const Point<dim> &x) { return kinematics.volume_factor(x); },
         system.min_cell_diameter);
     if (contact.active())
-    {
-      // The curvature tangent is planar (2D only).
-      if constexpr (dim == 2)
-        curved_die_tangent.setup(system.mapping, system.dof_handler);
       non_candidate_penetration.setup(system.mapping, system.dof_handler);
-    }
   }
 
   template <int dim>

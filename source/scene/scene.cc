@@ -81,8 +81,6 @@ namespace ausroll::scene
                                                                       time,
                                                                       *timer,
                                                                       newton_log);
-      if (dim == 2 && parameters.contact.curvature_tangent)
-        equilibrium->curvature_tangent = &curved_die_tangent;
       system.setup_system();
       setup_dof_dependents();
       system.initialize_material_points(assembler->quadrature().size());

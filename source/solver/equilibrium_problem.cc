@@ -87,21 +87,18 @@ namespace ausroll::solver
       detail_log << "      contact: " << changes << " status change" << (changes > 1 ? "s" : "")
                  << ", re-assembling" << std::endl;
     }
-    // 3D: the derivative of the slip direction of the slipping nodes (at this assembly's normal
-    // forces)
-    if constexpr (dim == 3)
-      if (with_matrix && contact.active())
-        contact.add_slip_direction_tangent(
-            system.newton_constraints, system.system_matrix, system.rhs);
-    // The curvature tangent is planar (2D only; Scene<3> leaves curvature_tangent null).
-    if constexpr (dim == 2)
-      if (with_matrix && contact.active() && curvature_tangent != nullptr)
-        curvature_tangent->add_to(contact,
-                                  system.newton_constraints,
-                                  system.solution_ghosted,
-                                  system.residual_ghosted,
-                                  time,
-                                  system.system_matrix);
+    // The contact Newton terms beyond the assembled tangent (slip direction, curvature), at this
+    // assembly's reactions
+    if (with_matrix && contact.active())
+    {
+      const contact::ContactTangentInput<dim> input{contact,
+                                                    system.newton_constraints,
+                                                    system.solution_ghosted,
+                                                    system.residual_ghosted,
+                                                    time};
+      for (const auto &term : contact.tangent_terms())
+        term->add_to(input, system.system_matrix, system.rhs);
+    }
     // Force level: external loads and reactions (residual at prescribed DoFs).
     last_residual_norm = system.free_residual.l2_norm();
     last_reference_force = std::max(system.external_force.l2_norm(), system.reaction_norm());

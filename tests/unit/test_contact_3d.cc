@@ -124,9 +124,15 @@ namespace
         if (strategy->update_at_iterate() == 0)
           break;
       }
-      // as EquilibriumProblem::assemble(): the derivative of the 3D slip direction
-      if (with_matrix && direction_tangent)
-        contact->add_slip_direction_tangent(newton, problem.matrix, problem.rhs);
+      // as EquilibriumProblem::assemble(): the contact tangent terms (here the derivative of the
+      // 3D slip direction)
+      if (with_matrix)
+        for (const auto &term : contact->tangent_terms())
+          if (direction_tangent || term->name() != "slip direction")
+            term->add_to(
+                contact::ContactTangentInput<dim>{*contact, newton, u, problem.residual, time},
+                problem.matrix,
+                problem.rhs);
       double reaction_sq = 0.;
       for (unsigned int i = 0; i < problem.n_dofs(); ++i)
         if (newton.is_constrained(i))
@@ -266,7 +272,8 @@ namespace
     }
 
     std::unique_ptr<contact::ContactOperator<dim>> contact;
-    /** Add ContactOperator::add_slip_direction_tangent() to the tangent (as the scene does). */
+    /** Add the slip direction term of ContactOperator::tangent_terms() to the tangent (as the
+        scene does). */
     bool direction_tangent = true;
 
   private:
@@ -542,7 +549,7 @@ TEST(Contact3d, PlaneStrainSlabEqualsTwoDimensionalRun)
 }
 
 // The tangent of a slipping node's friction force -mu R_n d with d = s / |s| following the slip
-// s of the step (ContactOperator::add_slip_direction_tangent()): the oblique slide in full slip
+// s of the step (contact::SlipDirectionTangent): the oblique slide in full slip
 // (t = 4), evaluated a quarter step later (the die has moved 0.01 along e_s, each bottom node has
 // slipped 0.01 > slip_length = 5e-3 relative to it). The elastic block is linear, so the only
 // nonlinear terms are the contact ones: central differences (h = 1e-6, truncation ~ (h/|s|)^2

@@ -10,6 +10,7 @@
 #include <ausroll/contact/contact_strategy.h>
 #include <ausroll/contact/nodal_row_transform.h>
 #include <ausroll/contact/rigid_die.h>
+#include <ausroll/contact/tangent/contact_tangent_term.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
@@ -135,20 +136,29 @@ namespace ausroll::contact
     const RowTransforms<dim> &row_transforms() const { return transforms; }
 
     /**
-     * 3D: the derivative of the slip direction in the tangent (consistent linearisation of the
-     * isotropic cone). A slipping node whose slip s since its slip started is longer than
-     * slip_length has d = s / |s| at every iterate (update_geometry()), and its friction force
-     * -T(R_n) d, R_n the normal force of this assembly (compute_reactions() first), changes with
-     * the node's position x by -T (P - d (x) d) / |s| dx (P = I - n (x) n: the projection of the
-     * node on the die moves with the tangential part of dx). The rows of the node's equations
-     * (r + T d = 0) get + T / |s| (P - d (x) d) in the columns of its own DoFs, condensed with
-     * @p constraints (inhomogeneities into @p rhs, as the assembly does). Curvature terms of the
-     * tangents (|s| / R against 1) are left out. Returns the number of nodes (global). 2D: nothing
-     * (the slip sign does not depend on the iterate).
+     * The contact Newton terms beyond the assembled tangent (contact/tangent/: the slip
+     * direction, the curvature if `Contact/Curvature tangent`), built once from the parameters
+     * and set up on the DoFs by setup(): add each to every assembled matrix.
      */
-    unsigned int add_slip_direction_tangent(const dealii::AffineConstraints<double> &constraints,
-                                            dealii::TrilinosWrappers::SparseMatrix  &matrix,
-                                            dealii::TrilinosWrappers::MPI::Vector   &rhs) const;
+    const std::vector<std::unique_ptr<ContactTangentTerm<dim>>> &tangent_terms() const
+    {
+      return tangents;
+    }
+
+    /** A locally owned slipping node whose slip direction follows its slip (3D: the slip since
+        its slip started is longer than the slip length, update_geometry()): what the slip
+        direction tangent (tangent/slip_direction_tangent.h) reads. */
+    struct FollowedSlip
+    {
+      std::array<dealii::types::global_dof_index, dim> dofs;      ///< DoFs by component
+      dealii::Tensor<1, dim>                           normal;    ///< die normal
+      dealii::Tensor<1, dim>                           direction; ///< unit slip direction d
+      double slip = 0.;       ///< |s|, the slip since the slip started
+      double slip_limit = 0.; ///< T(R_n) at the normal force of the last compute_reactions()
+    };
+
+    /** The slipping nodes whose direction follows the slip (2D: none). */
+    std::vector<FollowedSlip> followed_slips() const;
 
     /** Store the nodal forces R = r(node) from the residual @p residual (ghosted). */
     void compute_reactions(const dealii::TrilinosWrappers::MPI::Vector &residual);
@@ -398,16 +408,17 @@ namespace ausroll::contact
     /** Rebuild the friction row transforms from the current statuses. */
     void build_row_transforms();
 
-    ContactParameters                           parameters;
-    std::vector<std::unique_ptr<RigidDie<dim>>> dies;
-    std::vector<Node>                           nodes;
-    RowTransforms<dim>                          transforms;
-    MPI_Comm                                    comm = MPI_COMM_WORLD;
-    double                                      time = 0.;
-    double                                      gap_tolerance = 1e-10;
+    ContactParameters                                     parameters;
+    std::vector<std::unique_ptr<RigidDie<dim>>>           dies;
+    std::vector<Node>                                     nodes;
+    RowTransforms<dim>                                    transforms;
+    std::vector<std::unique_ptr<ContactTangentTerm<dim>>> tangents; ///< tangent_terms()
+    MPI_Comm                                              comm = MPI_COMM_WORLD;
+    double                                                time = 0.;
+    double                                                gap_tolerance = 1e-10;
     double smallest_cell = 0.; ///< smallest cell diameter of the mesh (setup(): length_scale)
     /** 3D: slips over a step longer than this (1e-2 of the length scale) set the slip direction
-        at every iterate (with its derivative in the tangent: add_slip_direction_tangent()); shorter
+        at every iterate (with its derivative in the tangent: SlipDirectionTangent); shorter
         ones keep it (update_slip_direction()). */
     double slip_length = 1e-8;
     /** 3D, nested active set: a turn of the slip direction (largest change of a component of

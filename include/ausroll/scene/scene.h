@@ -9,7 +9,6 @@
 #include <ausroll/adaptivity/material_point_transfer.h>
 #include <ausroll/contact/contact_operator.h>
 #include <ausroll/contact/contact_strategy.h>
-#include <ausroll/contact/curved_die_tangent.h>
 #include <ausroll/contact/die_touch.h>
 #include <ausroll/contact/non_candidate_penetration.h>
 #include <ausroll/io/history.h>
@@ -185,8 +184,6 @@ namespace ausroll::scene
     mechanics::BoundaryConditions<dim>           boundary_conditions;
     std::unique_ptr<mechanics::Assembler<dim>>   assembler;
     contact::ContactOperator<dim>                contact;
-    /** Curvature part of the slip-node tangent on curved dies (`Contact/Curvature tangent`). */
-    contact::CurvedDieTangent<dim> curved_die_tangent;
     /** The temperature field of a thermal scene (null: isothermal). */
     std::unique_ptr<thermal::ThermalSystem<dim>> thermal;
     /** The last heat solve belongs to the current mechanical solution (repeated split). */

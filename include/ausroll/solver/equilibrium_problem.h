@@ -8,7 +8,6 @@
 
 #include <ausroll/contact/contact_operator.h>
 #include <ausroll/contact/contact_strategy.h>
-#include <ausroll/contact/curved_die_tangent.h>
 #include <ausroll/mechanics/assembler.h>
 #include <ausroll/mechanics/boundary_conditions.h>
 #include <ausroll/mechanics/mechanical_system.h>
@@ -91,10 +90,6 @@ namespace ausroll::solver
     }
 
     double largest_reference_force = 0.; ///< largest force level of the converged states so far
-
-    /** `Contact/Curvature tangent`: the curvature part of the slip-node tangent on curved dies,
-        added to every assembled matrix (nullptr: off). Owned by the caller, set up on its DoFs. */
-    const contact::CurvedDieTangent<dim> *curvature_tangent = nullptr;
 
   private:
     mechanics::MechanicalSystem<dim>         &system;

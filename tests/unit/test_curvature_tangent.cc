@@ -1,18 +1,21 @@
-// The curvature term of a slipping node's tangent on a curved die (contact/curved_die_tangent.h)
-// against the central difference of the condensed equation E(u_b) = v(x) . T(x) r on a circle
-// (r held fixed, so that the difference is the geometric part alone). Reference: the exact
-// derivative of the same formula; tolerance 1e-6 relative (difference step 1e-5 mm, the
-// truncation error is of order (step / radius)^2).
-#include <ausroll/contact/curved_die_tangent.h>
+// The curvature term of a slipping node's tangent on a curved die
+// (contact/tangent/curvature_tangent.h) against the central difference of the condensed equation
+// E(u_b) = v(x) . T(x) r on a circle (r held fixed, so that the difference is the geometric part
+// alone). Reference: the exact derivative of the same formula; tolerance 1e-6 relative (difference
+// step 1e-5 mm, the truncation error is of order (step / radius)^2).
+#include <ausroll/contact/tangent/curvature_tangent.h>
+#include <ausroll/core/exceptions.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace
 {
   using namespace dealii;
-  using ausroll::contact::CurvedDieTangent;
+  using ausroll::contact::CurvatureTangent;
 
   struct CircleNode
   {
@@ -66,13 +69,13 @@ namespace
           / (2. * h);
     const Tensor<1, 2> dn_ds = t0 / node.radius; // circle: dn/ds = t / R
     const double       term
-        = CurvedDieTangent<2>::node_term(n0, dn_ds, t0, c0, r, node.transform(x0), node.a, node.b);
+        = CurvatureTangent<2>::node_term(n0, dn_ds, t0, c0, r, node.transform(x0), node.a, node.b);
     EXPECT_NEAR(term, fd, 1e-6 * std::max(1., std::abs(fd)));
     return term;
   }
 } // namespace
 
-TEST(CurvedDieTangent, FrictionlessNodeOnCircleMatchesDifference)
+TEST(CurvatureTangent, FrictionlessNodeOnCircleMatchesDifference)
 {
   CircleNode         node;
   const Tensor<1, 2> r{{300., 2000.}};
@@ -83,7 +86,7 @@ TEST(CurvedDieTangent, FrictionlessNodeOnCircleMatchesDifference)
   EXPECT_NEAR(check(node, 0., Tensor<1, 2>{{0., 2000.}}), 2000. / 10., 1e-9);
 }
 
-TEST(CurvedDieTangent, CoulombNodeOnCircleMatchesDifference)
+TEST(CurvatureTangent, CoulombNodeOnCircleMatchesDifference)
 {
   CircleNode node;
   node.mu_s = -0.3;
@@ -94,7 +97,7 @@ TEST(CurvedDieTangent, CoulombNodeOnCircleMatchesDifference)
   check(node, 0.2, r);
 }
 
-TEST(CurvedDieTangent, ConstrainedXComponent)
+TEST(CurvatureTangent, ConstrainedXComponent)
 {
   // a node on the side of the circle: the x component is the constrained one
   CircleNode node;
@@ -105,12 +108,35 @@ TEST(CurvedDieTangent, ConstrainedXComponent)
     check(node, angle, r);
 }
 
-TEST(CurvedDieTangent, FlatDieAddsNothing)
+TEST(CurvatureTangent, FlatDieAddsNothing)
 {
   const Tensor<1, 2> n{{0., -1.}}, t{{-1., 0.}};
   Tensor<2, 2>       T;
   T[0][0] = T[1][1] = 1.;
   EXPECT_EQ(
-      CurvedDieTangent<2>::node_term(n, Tensor<1, 2>(), t, 0., Tensor<1, 2>{{5., 7.}}, T, 1, 0),
+      CurvatureTangent<2>::node_term(n, Tensor<1, 2>(), t, 0., Tensor<1, 2>{{5., 7.}}, T, 1, 0),
       0.);
+}
+
+// The list of contact tangent terms (contact/tangent/contact_tangent_term.h) as the parameters
+// ask for it: the slip direction always (it says itself when it adds nothing), the curvature
+// only with `Contact/Curvature tangent = true`, and a clear InputError where the curvature term
+// does not exist (3D).
+TEST(ContactTangentTerms, ListFollowsParameters)
+{
+  using namespace ausroll::contact;
+  const auto names = [](const auto &terms)
+  {
+    std::vector<std::string> n;
+    for (const auto &term : terms)
+      n.push_back(term->name());
+    return n;
+  };
+  ContactParameters parameters;
+  EXPECT_EQ(names(create_tangent_terms<2>(parameters)), std::vector<std::string>{"slip direction"});
+  EXPECT_EQ(names(create_tangent_terms<3>(parameters)), std::vector<std::string>{"slip direction"});
+  parameters.curvature_tangent = true;
+  EXPECT_EQ(names(create_tangent_terms<2>(parameters)),
+            (std::vector<std::string>{"slip direction", "curvature"}));
+  EXPECT_THROW(create_tangent_terms<3>(parameters), ausroll::InputError);
 }
