@@ -58,7 +58,7 @@ namespace ausroll::scene
     }
 
     const double                    cells = system.triangulation.n_global_active_cells();
-    const mechanics::MemoryEstimate estimate = check_sizes(parameters, cells, dim);
+    const mechanics::MemoryEstimate estimate = check_sizes<dim>(parameters, cells);
     const double                    dofs = system.dof_handler.n_dofs();
     const double                    points = cells * assembler->quadrature().size();
     const double                    entries = system.system_matrix.n_nonzero_elements();

@@ -61,10 +61,10 @@ namespace ausroll::scene
       geometry::create_workpiece(parameters.geometry,
                                  system.triangulation,
                                  !resuming,
-                                 [this](const double n) { check_sizes(parameters, n, dim); });
+                                 [this](const double n) { check_sizes<dim>(parameters, n); });
       if (resuming)
         checkpoint_directory = io::load_checkpoint_mesh(system, parameters.entries, dir);
-      check_sizes(parameters, system.triangulation.n_global_active_cells(), dim);
+      check_sizes<dim>(parameters, system.triangulation.n_global_active_cells());
       assembler = std::make_unique<mechanics::Assembler<dim>>(system.mapping,
                                                               system.fe,
                                                               parameters.model.quadrature_points,

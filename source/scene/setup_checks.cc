@@ -2,6 +2,7 @@
 #include <ausroll/geometry/workpiece.h>
 #include <ausroll/io/line_probe.h>
 #include <ausroll/scene/setup_checks.h>
+#include <ausroll/solver/linear_solver.h>
 
 #include <deal.II/grid/grid_tools.h>
 
@@ -53,8 +54,8 @@ namespace ausroll::scene
           times, box.get_boundary_points().first.distance(box.get_boundary_points().second));
   }
 
-  mechanics::MemoryEstimate
-  check_sizes(const SceneParameters &parameters, const double n_cells, const unsigned int dim)
+  template <int dim>
+  mechanics::MemoryEstimate check_sizes(const SceneParameters &parameters, const double n_cells)
   {
     const unsigned int degree = parameters.model.degree;
     geometry::require_dof_estimate(n_cells, degree, dim);
@@ -74,7 +75,8 @@ namespace ausroll::scene
     const auto  &linear = parameters.solver.linear;
     const bool   direct = linear.type == solver::LinearSolverType::direct
                         || (linear.type == solver::LinearSolverType::automatic
-                            && (dim == 2 || dofs < linear.automatic_iterative_threshold));
+                            && solver::automatic_solver_type<dim>(linear, dofs)
+                                   == solver::LinearSolverType::direct);
     const mechanics::MemoryEstimate estimate = mechanics::estimate_memory(
         dim, n_cells, degree, parameters.model.quadrature_points, direct, probe_points);
     const geometry::GeometryParameters &g = parameters.geometry;
@@ -89,12 +91,14 @@ namespace ausroll::scene
     return estimate;
   }
 
-  template void check_setup(const SceneParameters &,
-                            const dealii::Triangulation<2> &,
-                            const mechanics::BoundaryConditions<2> &,
-                            const contact::ContactOperator<2> &);
-  template void check_setup(const SceneParameters &,
-                            const dealii::Triangulation<3> &,
-                            const mechanics::BoundaryConditions<3> &,
-                            const contact::ContactOperator<3> &);
+  template mechanics::MemoryEstimate check_sizes<2>(const SceneParameters &, const double);
+  template mechanics::MemoryEstimate check_sizes<3>(const SceneParameters &, const double);
+  template void                      check_setup(const SceneParameters &,
+                                                 const dealii::Triangulation<2> &,
+                                                 const mechanics::BoundaryConditions<2> &,
+                                                 const contact::ContactOperator<2> &);
+  template void                      check_setup(const SceneParameters &,
+                                                 const dealii::Triangulation<3> &,
+                                                 const mechanics::BoundaryConditions<3> &,
+                                                 const contact::ContactOperator<3> &);
 } // namespace ausroll::scene

@@ -1,4 +1,5 @@
 #include <ausroll/core/exceptions.h>
+#include <ausroll/mechanics/rigid_body_modes.h>
 #include <ausroll/solver/linear_solver.h>
 
 #include <deal.II/base/timer.h>
@@ -20,13 +21,15 @@ namespace ausroll::solver
 {
   using namespace dealii;
 
-  namespace
+  template <int dim>
+  LinearSolverType automatic_solver_type(const LinearSolverParameters &parameters,
+                                         const double                  n_dofs)
   {
-    /** Direct solver package = automatic uses KLU (on one rank) below this many unknowns. */
-    constexpr dealii::types::global_dof_index automatic_klu_limit = 10000;
-    /** The same in 3D. */
-    constexpr dealii::types::global_dof_index automatic_klu_limit_3d = 3000;
-  } // namespace
+    return AutomaticSolverChoice<dim>::iterative_from_threshold
+                   && n_dofs >= parameters.automatic_iterative_threshold
+               ? LinearSolverType::iterative
+               : LinearSolverType::direct;
+  }
 
   template <int dim>
   LinearSolver<dim>::LinearSolver(const LinearSolverParameters &parameters)
@@ -39,7 +42,7 @@ namespace ausroll::solver
                                                const Mapping<dim>    &mapping)
   {
     const IndexSet &owned = dof_handler.locally_owned_dofs();
-    const unsigned  n_modes = dim == 2 ? 3 : 6;
+    const unsigned  n_modes = mechanics::n_rigid_body_modes<dim>;
     rigid_body_modes.assign(n_modes, std::vector<double>(owned.n_elements(), 0.));
 
     std::map<types::global_dof_index, Point<dim>> points;
@@ -56,16 +59,8 @@ namespace ausroll::solver
             const unsigned int c = fe.system_to_component_index(i).first;
             const unsigned int row = owned.index_within_set(dofs[i]);
             const Point<dim>  &x = points[dofs[i]];
-            rigid_body_modes[c][row] = 1.;
-            if (dim == 2)
-              rigid_body_modes[2][row] = (c == 0 ? -x[1] : x[0]);
-            else
-            {
-              // rotations about x, y, z: omega x r
-              const unsigned int a = (c + 1) % 3, b = (c + 2) % 3;
-              rigid_body_modes[3 + b][row] = x[a];
-              rigid_body_modes[3 + a][row] = -x[b];
-            }
+            for (unsigned int m = 0; m < n_modes; ++m)
+              rigid_body_modes[m][row] = mechanics::rigid_body_mode<dim>(m, c, x);
           }
       }
   }
@@ -162,9 +157,7 @@ namespace ausroll::solver
   {
     if (parameters.type != LinearSolverType::automatic)
       return parameters.type;
-    return dim == 3 && double(n_dofs) >= parameters.automatic_iterative_threshold
-               ? LinearSolverType::iterative
-               : LinearSolverType::direct;
+    return automatic_solver_type<dim>(parameters, double(n_dofs));
   }
 
   template <int dim>
@@ -188,7 +181,7 @@ namespace ausroll::solver
         const bool mumps
             = parameters.direct_package == "MUMPS"
               || (parameters.direct_package == "automatic"
-                  && (A.m() >= (dim == 3 ? automatic_klu_limit_3d : automatic_klu_limit)
+                  && (A.m() >= AutomaticSolverChoice<dim>::klu_limit
                       || Utilities::MPI::n_mpi_processes(A.get_mpi_communicator()) > 1));
         (void)control;
         try
@@ -304,6 +297,8 @@ namespace ausroll::solver
     return info;
   }
 
+  template LinearSolverType automatic_solver_type<2>(const LinearSolverParameters &, const double);
+  template LinearSolverType automatic_solver_type<3>(const LinearSolverParameters &, const double);
   template class LinearSolver<2>;
   template class LinearSolver<3>;
 } // namespace ausroll::solver

@@ -8,6 +8,7 @@
  * condition numbers below 1e4, so a stable LU leaves 1e-15; the solver's own acceptance bound is
  * 1e-10).
  */
+#include <ausroll/mechanics/rigid_body_modes.h>
 #include <ausroll/solver/linear_solver.h>
 
 #include <deal.II/base/index_set.h>
@@ -115,4 +116,34 @@ TEST(LinearSolver, KeptKluPivotsSolveChangedValuesToRoundOff)
   fill(A, [](unsigned int i, unsigned int j) { return i == j ? 4. : -1.; });
   solver.solve(A, x, b);
   EXPECT_LE(relative_residual(A, x, b), 1e-12);
+}
+
+// The near null space given to the AMG (mechanics/rigid_body_modes.h): dim (dim + 1) / 2 modes,
+// the translations e_k, and rotations that are omega x r: 2D omega = e_z, u = (-y, x); 3D
+// omega = -e_k for mode dim + k (the sign is the one the solver has always used). Reference: the
+// cross product written out; exact (the modes are copies of coordinates).
+TEST(RigidBodyModes, TranslationsAndRotations)
+{
+  using ausroll::mechanics::n_rigid_body_modes;
+  using ausroll::mechanics::rigid_body_mode;
+  EXPECT_EQ(n_rigid_body_modes<2>, 3u);
+  EXPECT_EQ(n_rigid_body_modes<3>, 6u);
+  const dealii::Point<2> p(0.3, -1.7);
+  for (unsigned int c = 0; c < 2; ++c)
+    for (unsigned int k = 0; k < 2; ++k)
+      EXPECT_EQ(rigid_body_mode<2>(k, c, p), c == k ? 1. : 0.);
+  EXPECT_EQ(rigid_body_mode<2>(2, 0, p), -p[1]);
+  EXPECT_EQ(rigid_body_mode<2>(2, 1, p), p[0]);
+  const dealii::Point<3> x(0.3, -1.7, 2.9);
+  for (unsigned int k = 0; k < 3; ++k)
+  {
+    dealii::Tensor<1, 3> omega;
+    omega[k] = -1.;
+    const dealii::Tensor<1, 3> u = dealii::cross_product_3d(omega, x);
+    for (unsigned int c = 0; c < 3; ++c)
+    {
+      EXPECT_EQ(rigid_body_mode<3>(k, c, x), c == k ? 1. : 0.);
+      EXPECT_EQ(rigid_body_mode<3>(3 + k, c, x), u[c]) << "mode " << 3 + k << ", component " << c;
+    }
+  }
 }

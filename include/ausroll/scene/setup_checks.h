@@ -29,12 +29,12 @@ namespace ausroll::scene
                    const contact::ContactOperator<dim>      &contact);
 
   /**
-   * The sizes of a discretisation of @p n_cells active cells in @p dim dimensions with the
+   * The sizes of a discretisation of @p n_cells active cells in dim dimensions with the
    * element, quadrature, linear solver and line probes of @p parameters, checked before any DoF
    * or material point is allocated: InputError if the DoFs exceed geometry::max_dofs or the
    * estimated memory exceeds the machine's (mechanics::require_memory()), naming the entries
    * that set the size with their values. Returns the estimate (printed by --check-input).
    */
-  mechanics::MemoryEstimate
-  check_sizes(const SceneParameters &parameters, double n_cells, unsigned int dim);
+  template <int dim>
+  mechanics::MemoryEstimate check_sizes(const SceneParameters &parameters, double n_cells);
 } // namespace ausroll::scene

@@ -49,6 +49,38 @@ namespace ausroll::solver
   };
 
   /**
+   * How the automatic choices of `Solver/Linear solver` depend on the dimension of the mesh: the
+   * fill-in of a sparse direct factorisation grows much faster in 3D (doc/benchmarks.md, "3D
+   * linear solver": KLU equal to MUMPS at 2187 DoFs, 7x slower at 14739; in 2D equal near 10^4).
+   */
+  template <int dim>
+  struct AutomaticSolverChoice;
+
+  template <>
+  struct AutomaticSolverChoice<2>
+  {
+    /** `Type = automatic` stays direct at any size. */
+    static constexpr bool iterative_from_threshold = false;
+    /** `Direct package = automatic` uses KLU (on one rank) below this many unknowns. */
+    static constexpr dealii::types::global_dof_index klu_limit = 10000;
+  };
+
+  template <>
+  struct AutomaticSolverChoice<3>
+  {
+    /** `Type = automatic` is iterative from `Automatic iterative threshold` unknowns on. */
+    static constexpr bool iterative_from_threshold = true;
+    /** `Direct package = automatic` uses KLU (on one rank) below this many unknowns. */
+    static constexpr dealii::types::global_dof_index klu_limit = 3000;
+  };
+
+  /** The solver family that `Type = automatic` of @p parameters chooses for @p n_dofs unknowns
+      (also for an estimate of them before the mesh exists). */
+  template <int dim>
+  LinearSolverType automatic_solver_type(const LinearSolverParameters &parameters,
+                                         const double                  n_dofs);
+
+  /**
    * Direct (Amesos MUMPS/KLU) or iterative (GMRES or CG + ML algebraic multigrid) solver. The AMG
    * preconditioner is given the rigid-body modes of the displacement field (translations and
    * rotations) as near null space, which deal.II 9.4 does not provide by itself.
@@ -87,7 +119,7 @@ namespace ausroll::solver
 
     /**
      * The solver family used for a system of @p n_dofs unknowns: `Type`, or for Type = automatic
-     * direct in 2D and below `Automatic iterative threshold` unknowns in 3D, iterative from there.
+     * automatic_solver_type().
      */
     LinearSolverType resolved_type(dealii::types::global_dof_index n_dofs) const;
 
