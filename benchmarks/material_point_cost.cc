@@ -4,7 +4,8 @@
  * `Model/Kinematics`, in an elastic and in a plastic step after a plastic history. These run at
  * every quadrature point in every Newton iteration. A second table gives the cost of the tensor
  * functions of the finite-strain model (tensor_functions.h: spectral decomposition, logarithm,
- * exponential, with and without derivative, polar decomposition) on 64 symmetric positive definite
+ * exponential, with and without derivative, polar decomposition; and deal.II's eigenvectors() with
+ * its three methods, the alternatives to the closed form) on 64 symmetric positive definite
  * tensors (a third of them with two equal eigenvalues), general and with x_3 principal (plane).
  *
  * A third table gives the cost of the metallurgy: every kinematics wrapped with the thermal strain
@@ -184,6 +185,24 @@ namespace
     };
     row("spectral_decomposition",
         [](const SymmetricTensor<2, 3> &X) { return spectral_decomposition(X).vectors[0][0]; });
+    // deal.II's eigensolvers on the same tensors (the alternatives to the closed form)
+    row("dealii::eigenvectors, QL",
+        [](const SymmetricTensor<2, 3> &X)
+        {
+          return dealii::eigenvectors(
+                     X, dealii::SymmetricTensorEigenvectorMethod::ql_implicit_shifts)[0]
+              .second[0];
+        });
+    row("dealii::eigenvectors, hybrid",
+        [](const SymmetricTensor<2, 3> &X) {
+          return dealii::eigenvectors(X, dealii::SymmetricTensorEigenvectorMethod::hybrid)[0]
+              .second[0];
+        });
+    row("dealii::eigenvectors, Jacobi",
+        [](const SymmetricTensor<2, 3> &X) {
+          return dealii::eigenvectors(X, dealii::SymmetricTensorEigenvectorMethod::jacobi)[0]
+              .second[0];
+        });
     row("logarithm", [](const SymmetricTensor<2, 3> &X) { return logarithm(X)[0][1]; });
     row("logarithm + derivative",
         [](const SymmetricTensor<2, 3> &X)

@@ -261,6 +261,46 @@ namespace ausroll::material
           }
           w[pair] = (a == b ? 1. : 2.) * theta[a][b];
         }
+
+      // e_3 principal (a plane-strain or axisymmetric tensor: one eigenvector is +-e_3, the
+      // others lie in the plane): N_ab has only xx, yy, xy entries for the two in-plane vectors,
+      // only zz for e_3 (x) e_3 and only xz, yz for the mixed pairs, so dY/dX has the three
+      // blocks {xx, yy, xy}, {zz}, {xz, yz}. The terms of each block are summed in the order of
+      // the general loop (pairs ascending); the terms left out are products with exact zeros,
+      // so the result is the general one to the bit.
+      unsigned int axis = 3; // the index of the eigenvector +-e_3
+      for (unsigned int a = 0; a < 3; ++a)
+        if (s.vectors[a][0] == 0. && s.vectors[a][1] == 0.)
+          axis = a;
+      if (axis < 3 && s.vectors[(axis + 1) % 3][2] == 0. && s.vectors[(axis + 2) % 3][2] == 0.)
+      {
+        static constexpr unsigned int in_plane[3] = {0, 1, 3}, anti_plane[2] = {4, 5};
+        for (unsigned int p = 0; p < 36; ++p)
+          D.access_raw_entry(p) = 0.;
+        pair = 0;
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int b = a; b < 3; ++b, ++pair)
+          {
+            const auto add = [&](const auto &entries)
+            {
+              for (const unsigned int p : entries)
+                for (const unsigned int q : entries)
+                  if (q >= p)
+                    D.access_raw_entry(6 * p + q) += w[pair] * N[pair][p] * N[pair][q];
+            };
+            if (a != axis && b != axis)
+              add(in_plane);
+            else if (a == axis && b == axis)
+              D.access_raw_entry(6 * 2 + 2) += w[pair] * N[pair][2] * N[pair][2];
+            else
+              add(anti_plane);
+          }
+        for (unsigned int p = 0; p < 6; ++p)
+          for (unsigned int q = p + 1; q < 6; ++q)
+            D.access_raw_entry(6 * q + p) = D.access_raw_entry(6 * p + q);
+        return;
+      }
+
       for (unsigned int p = 0; p < 6; ++p)
         for (unsigned int q = p; q < 6; ++q)
         {

@@ -48,6 +48,30 @@ namespace ausroll::testing
     return max_err / scale;
   }
 
+  /**
+   * R_ijkl = Q_ia Q_jb Q_kc Q_ld D_abcd: a fourth-order tensor (Tensor<4, 3> or
+   * SymmetricTensor<4, 3>) in the frame turned by @p Q.
+   */
+  template <typename Tensor4>
+  Tensor4 rotate_fourth_order(const dealii::Tensor<2, 3> &Q, const Tensor4 &D)
+  {
+    Tensor4 R;
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int l = 0; l < 3; ++l)
+          {
+            double sum = 0.;
+            for (unsigned int a = 0; a < 3; ++a)
+              for (unsigned int b = 0; b < 3; ++b)
+                for (unsigned int c = 0; c < 3; ++c)
+                  for (unsigned int d = 0; d < 3; ++d)
+                    sum += Q[i][a] * Q[j][b] * Q[k][c] * Q[l][d] * D[a][b][c][d];
+            R[i][j][k][l] = sum;
+          }
+    return R;
+  }
+
   /** As tangent_error() for a plane-stress model (PlaneStressDriver sets F_zz itself): the
       in-plane block of dP/dF against central differences of the in-plane components of F. */
   inline double in_plane_tangent_error(const material::ConstitutiveModel &model,

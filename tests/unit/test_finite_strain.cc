@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <tuple>
 
 using namespace ausroll::material;
 using dealii::SymmetricTensor;
@@ -243,6 +244,66 @@ TEST(FiniteStrainModels, SuperposedRotationRotatesCauchyStressExactly)
     EXPECT_LT(err_P, 1e-12) << to_string(kin);
     EXPECT_NEAR(b.equivalent_plastic_strain, a.equivalent_plastic_strain, 1e-14);
   }
+}
+
+TEST(FiniteStrainLogModel, PlaneTangentEqualsTheGeneralOneAndFiniteDifferences)
+{
+  // A plane point (F, F_n, b_e,n without xz, yz entries; no back stress) takes the split path of
+  // the tangent (in-plane problem and anti-plane shear). Reference 1, the general path: the same
+  // point turned out of the plane by a generic rotation Q (F' = Q F Q^T, F_n' = Q F_n Q^T,
+  // b_e,n' = Q b_e,n Q^T) gives P' = Q P Q^T and A' = Q^4 A for this isotropic model, to the
+  // rounding of the rotations and of the general decomposition (bound 1e-12 of |A| and |P|, as
+  // the objectivity test above; ln b of b = 1.002 I amplifies the rounding of b 500-fold: P
+  // differs by 1e-13 there). Reference 2, central differences of P in all 9 directions, the
+  // anti-plane ones included (bound 1e-6, as TangentsMatchFiniteDifferences). States: elastic
+  // and plastic steps after a plane plastic history (zz stretch 0.97: an axisymmetric-like
+  // point), and an elastic step from the virgin state to F = 1.001 I (three equal eigenvalues).
+  const auto model = create_constitutive_model(KinematicsType::finite_strain, steel(1000.), false);
+  const Tensor<2, 3> Q = rotation(1.1, vec(0.3, -1., 0.8));
+  const auto         plane = [](const double angle, const Tensor<2, 3> &U)
+  { return rotation(angle * M_PI / 180., vec(0., 0., 1.)) * U; };
+  MaterialPoint history;
+  load_along(*model, history, plane(20., stretch(1.15, 0.92, 0.97, 0.08)), 10);
+  ASSERT_GT(history.committed.equivalent_plastic_strain, 0.02);
+  const Tensor<2, 3> F_n = history.committed.deformation_gradient;
+  const Tensor<2, 3> F_plastic = plane(25., stretch(1.2, 0.9, 0.96, 0.1));
+  const Tensor<2, 3> F_unload = F_n - 0.001 * (F_n - plane(20., identity()));
+  MaterialState      virgin;
+
+  double max_general = 0., max_fd = 0.;
+  for (const auto &[name, old, F] :
+       {std::make_tuple("plastic step", history.committed, F_plastic),
+        std::make_tuple("elastic unloading", history.committed, F_unload),
+        std::make_tuple("virgin, F = 1.001 I", virgin, 1.001 * identity())})
+  {
+    MaterialState s, s_turned;
+    Tensor<2, 3>  P, P_turned;
+    Tensor<4, 3>  A, A_turned;
+    model->evaluate(F, old, s, P, &A);
+    const bool plastic = s.equivalent_plastic_strain > old.equivalent_plastic_strain;
+    EXPECT_EQ(plastic, std::string(name) == "plastic step") << name;
+    MaterialState old_turned = old;
+    old_turned.deformation_gradient = Q * old.deformation_gradient * dealii::transpose(Q);
+    old_turned.elastic_left_cauchy_green = rotate(Q, old.elastic_left_cauchy_green);
+    model->evaluate(Q * F * dealii::transpose(Q), old_turned, s_turned, P_turned, &A_turned);
+    const Tensor<4, 3> A_back
+        = ausroll::testing::rotate_fourth_order(dealii::transpose(Q), A_turned);
+    const double err_general = relative_difference(A_back, A);
+    const double err_P = relative_difference(Tensor<2, 3>(dealii::transpose(Q) * P_turned * Q), P);
+    const double err_fd = tangent_error(*model, old, F);
+    std::printf("[ finite strain      ] plane %-18s (%s): A against the general path %.2e, P %.2e, "
+                "FD error %.2e\n",
+                name,
+                plastic ? "plastic" : "elastic",
+                err_general,
+                err_P,
+                err_fd);
+    EXPECT_LT(err_P, 1e-12) << name;
+    max_general = std::max(max_general, err_general);
+    max_fd = std::max(max_fd, err_fd);
+  }
+  EXPECT_LT(max_general, 1e-12);
+  EXPECT_LT(max_fd, 1e-6);
 }
 
 TEST(FiniteStrainModels, JaumannRigidRotationIncrementRotatesStress)

@@ -14,6 +14,8 @@
 #include <ausroll/core/exceptions.h>
 #include <ausroll/material/tensor_functions.h>
 
+#include "material_test_utilities.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -111,6 +113,37 @@ namespace
       EXPECT_LT(orthonormality, 1e-14) << what;
     }
   };
+
+  SymmetricTensor<2, 3> logarithm_value(const SymmetricTensor<2, 3> &X)
+  {
+    return logarithm(X);
+  }
+
+  SymmetricTensor<2, 3> exponential_value(const SymmetricTensor<2, 3> &X)
+  {
+    return exponential(X);
+  }
+
+  /**
+   * max over the directions dX = e_k (x) e_l (k <= l) of |fd - D : dX| / |D : dX|, fd the central
+   * difference of @p f at @p X (h = 1e-6; the bound 1e-8 of the file comment).
+   */
+  double derivative_error(SymmetricTensor<2, 3> (*f)(const SymmetricTensor<2, 3> &),
+                          const SymmetricTensor<2, 3> &X,
+                          const SymmetricTensor<4, 3> &D)
+  {
+    const double h = 1e-6;
+    double       error = 0.;
+    for (unsigned int k = 0; k < 3; ++k)
+      for (unsigned int l = k; l < 3; ++l)
+      {
+        SymmetricTensor<2, 3> dX;
+        dX[k][l] = 1.;
+        const SymmetricTensor<2, 3> fd = (f(X + h * dX) - f(X - h * dX)) / (2. * h);
+        error = std::max(error, (fd - D * dX).norm() / (D * dX).norm());
+      }
+    return error;
+  }
 
   /**
    * Random symmetric tensors: general ones, plane ones (x_3 principal, as in a plane-strain
@@ -327,19 +360,8 @@ TEST(TensorFunctions, LogarithmAndExponentialDerivativesMatchFiniteDifferences)
     SymmetricTensor<4, 3> dexp_s;
     EXPECT_EQ(exponential(spectral_decomposition(X), &dexp_s), exponential(X));
     EXPECT_EQ(dexp_s, dexp);
-    const double h = 1e-6;
-    for (unsigned int k = 0; k < 3; ++k)
-      for (unsigned int l = k; l < 3; ++l)
-      {
-        SymmetricTensor<2, 3> dX;
-        dX[k][l] = 1.;
-        const SymmetricTensor<2, 3> fd_log
-            = (logarithm(X + h * dX) - logarithm(X - h * dX)) / (2. * h);
-        const SymmetricTensor<2, 3> fd_exp
-            = (exponential(X + h * dX) - exponential(X - h * dX)) / (2. * h);
-        max_log = std::max(max_log, (fd_log - dlog * dX).norm() / (dlog * dX).norm());
-        max_exp = std::max(max_exp, (fd_exp - dexp * dX).norm() / (dexp * dX).norm());
-      }
+    max_log = std::max(max_log, derivative_error(logarithm_value, X, dlog));
+    max_exp = std::max(max_exp, derivative_error(exponential_value, X, dexp));
     // major symmetry (the derivative of an isotropic function is the Hessian of a potential)
     for (unsigned int p = 0; p < 6; ++p)
       for (unsigned int q = 0; q < 6; ++q)
@@ -399,4 +421,62 @@ TEST(TensorFunctions, PolarDecomposition)
     EXPECT_LT((R - Q).norm(), 1e-13); // conditioned by 1 / (u_a + u_b) >= 1 / 3
     EXPECT_LT((U - U_exact).norm() / U_exact.norm(), 1e-14);
   }
+}
+
+TEST(TensorFunctions, PlaneDerivativesEqualTheGeneralOnesAndFiniteDifferences)
+{
+  // Plane tensors (e_3 principal: plane strain, axisymmetry) take the block path of the
+  // derivative ({xx, yy, xy}, {zz}, {xz, yz}). Reference 1, the general path: the same tensor
+  // turned out of the plane, X' = Q X Q^T (a generic rotation Q, so no eigenvector is a
+  // coordinate axis), gives D' = Q^4 D for an isotropic function. Both are smooth functions of X
+  // computed from the same divided differences; they differ by the rounding of the rotations
+  // and of the eigenvectors (eps |X| / gap, but entering D only multiplied by the difference of
+  // the divided differences, itself O(gap)): bound 1e-13 |D| (about 500 eps, the 3^4 sums of
+  // rotate_4 included). Reference 2, central differences (h = 1e-6, bound 1e-8: the header).
+  // In-plane eigenvalues split by 0 ... 0.3 and zz equal or nearly equal to one of them.
+  double max_general = 0., max_fd = 0., max_coupling = 0.;
+  for (const double split : {0., 1e-12, 1e-8, 1e-4, 0.3})
+    for (const double zz : {0.7, 1.4, 1.4 + 1e-12, 1.4 + 1e-8, 1.4 + 1e-4})
+      for (const double angle : {0., 0.4, 2.})
+      {
+        Tensor<2, 3> Q_plane; // a rotation about e_3
+        Q_plane[0][0] = Q_plane[1][1] = std::cos(angle);
+        Q_plane[0][1] = -std::sin(angle);
+        Q_plane[1][0] = std::sin(angle);
+        Q_plane[2][2] = 1.;
+        SymmetricTensor<2, 3> X = from_eigenpairs(Q_plane, {{1.4 + split, 1.4, zz}});
+        X[0][2] = X[1][2] = 0.; // exactly plane
+        const Tensor<2, 3> Q = random_rotation();
+        for (const bool exp : {false, true})
+        {
+          SymmetricTensor<4, 3> D, D_general;
+          (exp ? exponential(X, &D) : logarithm(X, &D));
+          const SymmetricTensor<2, 3> X_turned = rotate(Q, X);
+          (exp ? exponential(X_turned, &D_general) : logarithm(X_turned, &D_general));
+          const SymmetricTensor<4, 3> D_back
+              = ausroll::testing::rotate_fourth_order(dealii::transpose(Q), D_general);
+          double diff = 0., scale = 0.;
+          for (unsigned int p = 0; p < 36; ++p)
+          {
+            diff = std::max(diff, std::abs(D.access_raw_entry(p) - D_back.access_raw_entry(p)));
+            scale = std::max(scale, std::abs(D.access_raw_entry(p)));
+          }
+          max_general = std::max(max_general, diff / scale);
+          // the blocks: no coupling of {xx, yy, zz, xy} with {xz, yz}, nor of zz with xx, yy, xy
+          for (unsigned int p = 0; p < 6; ++p)
+            for (unsigned int q = 0; q < 6; ++q)
+              if ((p < 4) != (q < 4) || (p == 2) != (q == 2))
+                max_coupling = std::max(max_coupling, std::abs(D.access_raw_entry(6 * p + q)));
+          max_fd = std::max(max_fd,
+                            exp ? derivative_error(exponential_value, X, D)
+                                : derivative_error(logarithm_value, X, D));
+        }
+      }
+  std::printf("[ tensor functions ] plane derivatives: against the general path %.2e |D|, "
+              "FD error %.2e\n",
+              max_general,
+              max_fd);
+  EXPECT_LT(max_general, 1e-13);
+  EXPECT_LT(max_fd, 1e-8);
+  EXPECT_EQ(max_coupling, 0.); // exact zeros, as the general loop gives for a plane tensor
 }

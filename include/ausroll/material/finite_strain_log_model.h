@@ -33,7 +33,10 @@ namespace ausroll::material
    * Tangent: exact, by the chain rule. d tau = D : (d ln b / d b) : d b^trial / 2
    * (+ the back-stress rotation term), where d ln b / d b comes from the spectral decomposition
    * with divided differences (see logarithm()), d b^trial = dF C_p,n^-1 F^T + F C_p,n^-1 dF^T;
-   * then dP = d tau F^-T - tau F^-T dF^T F^-T.
+   * then dP = d tau F^-T - tau F^-T dF^T F^-T. At a planar point (plane strain, axisymmetry: F,
+   * F_n and b_e,n without xz, yz entries, no back stress) the tangent splits into the in-plane
+   * problem and the anti-plane shear, and only their nonzero terms are summed (the same result to
+   * the bit, about a third of the operations).
    *
    * State: @ref MaterialState::elastic_left_cauchy_green is b_e, @ref MaterialState::stress the
    * Cauchy stress tau / J, @ref MaterialState::back_stress the spatial back stress (Kirchhoff

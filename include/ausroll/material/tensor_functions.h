@@ -1,7 +1,9 @@
 /**
  * @file tensor_functions.h
  * Isotropic functions of symmetric 3x3 tensors (logarithm, exponential) and their derivatives
- * through the spectral decomposition, and the polar decomposition. Used by the finite-strain
+ * through the spectral decomposition, and the polar decomposition. For a tensor with e_3
+ * principal (plane strain, axisymmetry) the derivatives are assembled on their three blocks
+ * ({xx, yy, xy}, {zz}, {xz, yz}) only. Used by the finite-strain
  * material models (`Model/Kinematics = finite strain`); no state, no allocation.
  */
 #pragma once
