@@ -79,6 +79,10 @@ namespace ausroll::io
     meta.values["last_output_step"] = {double(state.last_output_step)};
     meta.values["largest_reference_force"] = {state.largest_reference_force};
     meta.values["contact"] = state.contact;
+    // generalized plane strain: lambda of the converged state and of the one before it
+    if (system.out_of_plane.active)
+      meta.values["out_of_plane_stretch"]
+          = {system.out_of_plane.step_start, system.out_of_plane.previous_start};
     std::vector<double> output_times;
     std::string         output_files;
     for (const auto &[t, file] : state.vtu_records)
@@ -156,6 +160,17 @@ namespace ausroll::io
     transfer.deserialize(vectors);
     system.solution_ghosted = system.solution;
     system.step_start = system.solution;
+    if (system.out_of_plane.active)
+    {
+      const auto stretch = meta.values.find("out_of_plane_stretch");
+      if (stretch == meta.values.end() || stretch->second.size() != 2)
+        throw InputError(directory
+                         + ": the checkpoint has no out-of-plane stretch (it was written by a run "
+                           "without Model/Planar model = generalized plane strain, which must "
+                           "match the run that wrote it)");
+      system.out_of_plane.stretch = system.out_of_plane.step_start = stretch->second[0];
+      system.out_of_plane.previous_start = stretch->second[1];
+    }
     points.prepare();
     points.unpack();
     if (thermal != nullptr)

@@ -35,6 +35,7 @@ namespace ausroll::mechanics
       , model(model)
       , boundary_conditions(boundary_conditions)
       , locking(locking)
+      , out_of_plane(kinematics.is_generalized_plane_strain())
       , layout(fe, cell_quadrature.size(), face_quadrature.size())
   {
     // The term list, in the order the terms add to a cell: the cached cell part first. A new
@@ -80,6 +81,8 @@ namespace ausroll::mechanics
     double *residual_values = nullptr, *external_values = nullptr, *free_values = nullptr,
            *rhs_values = nullptr;
 
+    // generalized plane strain: int P_zz dV and k_ee, summed by the copier in cell order
+    double axial_work = 0., axial_stiffness = 0.;
     // outcome, gathered by the copier in cell order
     bool        ok = true;
     double      min_jacobian = 1e300;
@@ -125,31 +128,33 @@ namespace ausroll::mechanics
       const auto it = row_transforms->find(copy.dofs[node_dofs[b][0]]);
       if (it == row_transforms->end())
         continue;
-      const Tensor<2, dim>   &T = it->second.matrix;
-      std::array<double, dim> old_r;
-      for (unsigned int c = 0; c < dim; ++c)
-        old_r[c] = copy.cell_residual(node_dofs[b][c]);
-      for (unsigned int c = 0; c < dim; ++c)
+      const Tensor<2, dim> &T = it->second.matrix;
+      // the node's rows of a local vector or matrix column: its row c becomes
+      // sum_d T[c][d] source(d) (source: the same entries, or the residual for the free one)
+      const auto transform = [&](const auto &entry, const auto &source)
       {
-        double s = 0.;
-        for (unsigned int d = 0; d < dim; ++d)
-          s += T[c][d] * old_r[d];
-        copy.cell_free(node_dofs[b][c]) = s;
-      }
-      if (setup.inputs.need_matrix)
-        for (unsigned int j = 0; j < layout.n_dofs; ++j)
+        std::array<double, dim> old;
+        for (unsigned int c = 0; c < dim; ++c)
+          old[c] = source(node_dofs[b][c]);
+        for (unsigned int c = 0; c < dim; ++c)
         {
-          std::array<double, dim> old_k;
-          for (unsigned int c = 0; c < dim; ++c)
-            old_k[c] = copy.cell_matrix(node_dofs[b][c], j);
-          for (unsigned int c = 0; c < dim; ++c)
-          {
-            double s = 0.;
-            for (unsigned int d = 0; d < dim; ++d)
-              s += T[c][d] * old_k[d];
-            copy.cell_matrix(node_dofs[b][c], j) = s;
-          }
+          double s = 0.;
+          for (unsigned int d = 0; d < dim; ++d)
+            s += T[c][d] * old[d];
+          entry(node_dofs[b][c]) = s;
         }
+      };
+      transform([&](const unsigned int i) -> double & { return copy.cell_free(i); },
+                [&](const unsigned int i) { return copy.cell_residual(i); });
+      if (!setup.inputs.need_matrix)
+        continue;
+      // the column k_ue of generalized plane strain is transformed as the matrix rows it borders
+      if (copy.column.size() > 0)
+        transform([&](const unsigned int i) -> double & { return copy.column(i); },
+                  [&](const unsigned int i) { return copy.column(i); });
+      for (unsigned int j = 0; j < layout.n_dofs; ++j)
+        transform([&](const unsigned int i) -> double & { return copy.cell_matrix(i, j); },
+                  [&](const unsigned int i) { return copy.cell_matrix(i, j); });
     }
   }
 
@@ -202,6 +207,20 @@ namespace ausroll::mechanics
       return;
     }
     const AssemblyTargets &targets = *setup.targets;
+    if (targets.out_of_plane != nullptr)
+    {
+      // generalized plane strain: the column condensed as the residual is (homogeneous Newton
+      // constraints), the row with the hanging nodes only (it is dotted with distributed
+      // increments, Dirichlet parts included)
+      setup.axial_work += copy.axial_work;
+      if (setup.inputs.need_matrix)
+      {
+        setup.axial_stiffness += copy.axial_stiffness;
+        setup.newton->distribute_local_to_global(
+            copy.column, copy.dofs, targets.out_of_plane->column);
+        setup.hanging->distribute_local_to_global(copy.row, copy.dofs, targets.out_of_plane->row);
+      }
+    }
     if (setup.slots != nullptr)
     {
       // A cell without constrained DoFs whose rows are all owned here: its entries straight into
@@ -276,12 +295,27 @@ namespace ausroll::mechanics
       std::copy_n(cache.residuals.begin() + index * n_dofs, n_dofs, copy.cell_residual.begin());
       copy.cell_external = 0.;
       copy.min_jacobian = cache.min_jacobian[index];
+      if (out_of_plane)
+      {
+        const double *const part = cache.out_of_plane.data() + index * (2 * n_dofs + 2);
+        std::copy_n(part, n_dofs, copy.column.begin());
+        std::copy_n(part + n_dofs, n_dofs, copy.row.begin());
+        copy.axial_work = part[2 * n_dofs];
+        copy.axial_stiffness = part[2 * n_dofs + 1];
+      }
     }
     else
     {
       copy.cell_matrix = 0.;
       copy.cell_residual = 0.;
       copy.cell_external = 0.;
+      if (out_of_plane)
+      {
+        copy.column = 0.;
+        copy.row = 0.;
+        copy.axial_work = 0.;
+        copy.axial_stiffness = 0.;
+      }
       for (unsigned int t = 0; t < n_cached_terms; ++t)
       {
         terms[t]->execute(cell, setup.inputs, *scratch.parts[t], copy);
@@ -298,6 +332,14 @@ namespace ausroll::mechanics
                       cache.matrices.begin() + index * n_dofs * n_dofs);
         std::copy_n(copy.cell_residual.begin(), n_dofs, cache.residuals.begin() + index * n_dofs);
         cache.min_jacobian[index] = copy.min_jacobian;
+        if (out_of_plane)
+        {
+          double *const part = cache.out_of_plane.data() + index * (2 * n_dofs + 2);
+          std::copy_n(copy.column.begin(), n_dofs, part);
+          std::copy_n(copy.row.begin(), n_dofs, part + n_dofs);
+          part[2 * n_dofs] = copy.axial_work;
+          part[2 * n_dofs + 1] = copy.axial_stiffness;
+        }
       }
     }
     for (unsigned int t = n_cached_terms; t < terms.size(); ++t)
@@ -368,7 +410,7 @@ namespace ausroll::mechanics
       if (!kept_scratch)
       {
         kept_scratch = std::make_unique<ScratchData>(terms);
-        kept_copy = std::make_unique<CopyData>(layout.n_dofs);
+        kept_copy = std::make_unique<CopyData>(layout.n_dofs, out_of_plane);
       }
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -388,7 +430,7 @@ namespace ausroll::mechanics
                          CopyData &copy) { assemble_one_cell(cell, setup, scratch, copy); },
           [this, &setup](const CopyData &copy) { copy_local_to_global(copy, setup); },
           ScratchData(terms),
-          CopyData(layout.n_dofs));
+          CopyData(layout.n_dofs, out_of_plane));
     }
 
     add_row_transform_offsets(dof_handler, setup);
@@ -407,6 +449,18 @@ namespace ausroll::mechanics
     {
       targets.matrix->compress(VectorOperation::add);
       targets.rhs->compress(VectorOperation::add);
+    }
+    if (targets.out_of_plane != nullptr)
+    {
+      GeneralizedPlaneStrain &border = *targets.out_of_plane;
+      const MPI_Comm          comm = dof_handler.get_communicator();
+      border.axial_work = Utilities::MPI::sum(setup.axial_work, comm);
+      if (setup.inputs.need_matrix)
+      {
+        border.stiffness = Utilities::MPI::sum(setup.axial_stiffness, comm);
+        border.column.compress(VectorOperation::add);
+        border.row.compress(VectorOperation::add);
+      }
     }
 
     // Agree on the outcome across ranks; the message comes from the lowest failing rank.
@@ -451,6 +505,7 @@ namespace ausroll::mechanics
     const double             *first = values[0];
     setup.reuse = cache->valid && cache->cached_state == cache->state
                   && cache->min_jacobian.size() == n_cells && cache->time == time
+                  && cache->stretch == kinematics.out_of_plane_stretch()
                   && (cache->with_matrix || !setup.inputs.need_matrix)
                   && cache->solution.size() == n_values
                   && std::memcmp(cache->solution.data(), first, n_values * sizeof(double)) == 0;
@@ -464,9 +519,11 @@ namespace ausroll::mechanics
     cache->valid = false;
     cache->cached_state = cache->state;
     cache->time = time;
+    cache->stretch = kinematics.out_of_plane_stretch();
     cache->solution.assign(first, first + n_values);
     cache->residuals.resize(n_cells * n_dofs);
     cache->min_jacobian.resize(n_cells);
+    cache->out_of_plane.resize(out_of_plane ? n_cells * (2 * n_dofs + 2) : 0);
     cache->matrices.resize(setup.inputs.need_matrix ? n_cells * n_dofs * n_dofs : 0);
   }
 

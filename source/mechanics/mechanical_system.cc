@@ -60,6 +60,11 @@ namespace ausroll::mechanics
       v->reinit(owned_dofs, comm);
     solution_ghosted.reinit(owned_dofs, relevant_dofs, comm);
     residual_ghosted.reinit(owned_dofs, relevant_dofs, comm);
+    if (out_of_plane.active)
+    {
+      out_of_plane.column.reinit(owned_dofs, comm);
+      out_of_plane.row.reinit(owned_dofs, comm);
+    }
 
     double h_min = std::numeric_limits<double>::max();
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -118,6 +123,10 @@ namespace ausroll::mechanics
       solution.add(-predictor_ratio, previous_start);
     }
     solution_ghosted = solution;
+    if (out_of_plane.active)
+      out_of_plane.stretch
+          = out_of_plane.step_start
+            + predictor_ratio * (out_of_plane.step_start - out_of_plane.previous_start);
   }
 
   template <int dim>
@@ -126,6 +135,7 @@ namespace ausroll::mechanics
     ++assembly_cache.state;
     solution = step_start;
     solution_ghosted = solution;
+    out_of_plane.stretch = out_of_plane.step_start;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto &point : material_points.get_data(cell))
@@ -141,8 +151,12 @@ namespace ausroll::mechanics
         for (const auto &point : material_points.get_data(cell))
           point->commit();
     if (new_step)
+    {
       previous_start = step_start;
+      out_of_plane.previous_start = out_of_plane.step_start;
+    }
     step_start = solution;
+    out_of_plane.step_start = out_of_plane.stretch;
   }
 
   template <int dim>
@@ -162,6 +176,15 @@ namespace ausroll::mechanics
       targets.matrix = &system_matrix;
       targets.rhs = &rhs;
     }
+    if (out_of_plane.active)
+    {
+      if (with_matrix)
+      {
+        out_of_plane.column = 0.;
+        out_of_plane.row = 0.;
+      }
+      targets.out_of_plane = &out_of_plane;
+    }
     return targets;
   }
 
@@ -171,6 +194,8 @@ namespace ausroll::mechanics
     solution = newton_start;
     solution.add(step_length, increment);
     solution_ghosted = solution;
+    if (out_of_plane.active)
+      out_of_plane.stretch = out_of_plane.newton_start + step_length * out_of_plane.increment;
   }
 
   template <int dim>

@@ -20,15 +20,27 @@ namespace ausroll::mechanics
         "(multiplicative J2 plasticity with logarithmic elastic strain; the default: forming "
         "processes). "
         "With any kinematics but small strain, pressure loads follow the deformed surface.");
-    prm.declare_entry("Planar model",
-                      "plane strain",
-                      Patterns::Selection("plane strain|plane stress|axisymmetric"),
-                      "Two-dimensional idealisation. Axisymmetric: x is the radius, y the axis.");
+    prm.declare_entry(
+        "Planar model",
+        "plane strain",
+        Patterns::Selection("plane strain|plane stress|axisymmetric|generalized plane strain"),
+        "Two-dimensional idealisation. Axisymmetric: x is the radius, y the axis. "
+        "Generalized plane strain: the out-of-plane stretch F_zz = lambda is one "
+        "unknown of the whole section (uniform eps_zz, as Abaqus' CPE*G elements), "
+        "found with the displacements from the axial force on the section, "
+        "int sigma_zz da = Axial force (0: free ends; thermal and transformation "
+        "strains then expand the section out of plane instead of loading it).");
     prm.declare_entry("Thickness",
                       "1",
                       Patterns::Double(0.),
                       "Out-of-plane thickness of plane strain / plane stress models (mm); reported "
                       "forces are for this thickness. Axisymmetric forces are for the full 2 pi.");
+    prm.declare_entry("Axial force",
+                      "0",
+                      Patterns::Double(),
+                      "Generalized plane strain only: the axial force on the cross-section, "
+                      "N = int sigma_zz da over the deformed section (N; the force on the whole "
+                      "section, not scaled by Thickness). 0: free ends.");
     prm.declare_entry("Polynomial degree",
                       "2",
                       Patterns::Integer(1, 4),
@@ -57,8 +69,10 @@ namespace ausroll::mechanics
     const std::string planar = prm.get("Planar model");
     planar_model = planar == "plane strain"   ? PlanarModel::plane_strain
                    : planar == "plane stress" ? PlanarModel::plane_stress
-                                              : PlanarModel::axisymmetric;
+                   : planar == "axisymmetric" ? PlanarModel::axisymmetric
+                                              : PlanarModel::generalized_plane_strain;
     thickness = prm.get_double("Thickness");
+    axial_force = prm.get_double("Axial force");
     degree = prm.get_integer("Polynomial degree");
     quadrature_points = prm.get_integer("Quadrature points");
     volumetric_locking = prm.get("Volumetric locking treatment") == "F-bar"
@@ -66,6 +80,11 @@ namespace ausroll::mechanics
                              : VolumetricLocking::none;
     prm.leave_subsection();
     require(thickness > 0., "Model/Thickness", "must be positive");
+    require(axial_force == 0. || planar_model == PlanarModel::generalized_plane_strain,
+            "Model/Axial force",
+            "applies to generalized plane strain only (Model/Planar model = '" + planar
+                + "' has no axial unknown): leave it at 0 or set Model/Planar model = "
+                  "generalized plane strain");
     if (quadrature_points == 0)
       quadrature_points = degree + 1;
     require(volumetric_locking == VolumetricLocking::none || quadrature_points > 1,

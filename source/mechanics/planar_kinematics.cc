@@ -8,9 +8,12 @@ namespace ausroll::mechanics
   using dealii::Tensor;
 
   template <int dim>
-  PlanarKinematics<dim>::PlanarKinematics(const PlanarModel model, const double thickness)
+  PlanarKinematics<dim>::PlanarKinematics(const PlanarModel model,
+                                          const double      thickness,
+                                          const double     *out_of_plane_stretch)
       : model(model)
       , thickness(thickness)
+      , stretch(out_of_plane_stretch)
   {
   }
 
@@ -22,6 +25,8 @@ namespace ausroll::mechanics
     Tensor<2, 3> F = shape_gradient(grad_u, u, X);
     for (unsigned int i = 0; i < 3; ++i)
       F[i][i] += 1.;
+    if (is_generalized_plane_strain())
+      F[2][2] = out_of_plane_stretch();
     return F;
   }
 

@@ -33,7 +33,7 @@ namespace ausroll::scene
       , regression_log(std::cout, io::prints(prm.output.verbosity, {Verbosity::regression}, rank))
       , timer(std::make_unique<TimerOutput>(comm, log, TimerOutput::never, TimerOutput::wall_times))
       , system(comm, prm.model.degree)
-      , kinematics(prm.model.planar_model, prm.model.thickness)
+      , kinematics(prm.model, system.out_of_plane.configure(prm.model, dim))
       , model(material::create_constitutive_model(
             prm.model.kinematics,
             prm.material,
@@ -130,7 +130,8 @@ namespace ausroll::scene
                                        parameters.model.quadrature_points,
                                        thermal != nullptr,
                                        parameters.phases.enabled,
-                                       parameters.phases.has_bainite()};
+                                       parameters.phases.has_bainite(),
+                                       system.out_of_plane.active};
       for (const solver::Stage &stage : parameters.stages.stages)
         context.stage_end_times.push_back(stage.end_time);
       postprocessors = io::make_standard_postprocessors<dim>(context, comm);
@@ -167,6 +168,7 @@ namespace ausroll::scene
                                     cutbacks,
                                     wall_clock.wall_time()};
     input.thermal = thermal.get();
+    input.out_of_plane = &system.out_of_plane;
     return input;
   }
 

@@ -1,7 +1,9 @@
 #include <ausroll/solver/equilibrium_problem.h>
+#include <ausroll/solver/out_of_plane_solve.h>
 #include <ausroll/solver/tangent_check.h>
 
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/vector.h>
 
 #include <cmath>
 #include <functional>
@@ -102,6 +104,12 @@ namespace ausroll::solver
     // Force level: external loads and reactions (residual at prescribed DoFs).
     last_residual_norm = system.free_residual.l2_norm();
     last_reference_force = std::max(system.external_force.l2_norm(), system.reaction_norm());
+    if (system.out_of_plane.active)
+    {
+      // generalized plane strain: the axial equation as a force on the section, N - N_target
+      last_residual_norm = std::hypot(last_residual_norm, system.out_of_plane.force_error());
+      last_reference_force = std::max(last_reference_force, std::abs(system.out_of_plane.target));
+    }
     return true;
   }
 
@@ -110,6 +118,8 @@ namespace ausroll::solver
   {
     TimerOutput::Scope scope(timer, "linear solve");
     system.newton_start = system.solution;
+    if (system.out_of_plane.active)
+      return solve_out_of_plane_increment(linear_solver, system);
     system.increment = 0.;
     const LinearSolveInfo info
         = linear_solver.solve(system.system_matrix, system.increment, system.rhs);
@@ -138,6 +148,7 @@ namespace ausroll::solver
     using Vector = typename mechanics::MechanicalSystem<dim>::Vector;
     const Vector r0 = system.free_residual;
     const double norm0 = r0.l2_norm();
+    const double axial0 = system.out_of_plane.residual(); // generalized plane strain
     std::string  message;
     log << "    tangent check: |r(u)| = " << std::scientific << std::setprecision(3) << norm0
         << ", e(eps) =";
@@ -151,6 +162,23 @@ namespace ausroll::solver
     const std::vector<double> epsilons{1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
     for (const double e : linear_model_errors(residual_at, r0, epsilons))
       log << " " << std::setprecision(2) << e;
+    if (system.out_of_plane.active && axial0 != 0.)
+    {
+      // the axial row k_eu . du + k_ee dlambda = -r_lambda of generalized plane strain
+      dealii::Vector<double> a0(1);
+      a0[0] = axial0;
+      const std::function<dealii::Vector<double>(double)> axial_at = [&](const double eps)
+      {
+        system.apply_increment(eps);
+        admissible = assemble(false, message) && admissible;
+        dealii::Vector<double> a(1);
+        a[0] = system.out_of_plane.residual();
+        return a;
+      };
+      log << "; axial row e(eps) =";
+      for (const double e : linear_model_errors(axial_at, a0, epsilons))
+        log << " " << std::setprecision(2) << e;
+    }
     if (!admissible)
       log << " (an inadmissible state on the way)";
     // where the largest difference sits (at eps = 1e-4)

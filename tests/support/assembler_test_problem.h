@@ -27,6 +27,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <string>
@@ -65,6 +66,46 @@ namespace ausroll::test_support
   {
     return [=](dealii::Triangulation<2> &tria)
     { dealii::GridGenerator::subdivided_hyper_rectangle(tria, n, p0, p1, /*colorize=*/true); };
+  }
+
+  /** The 2 x 2 cell block [1, 2.2] x [0, 1.1] of the tangent tests (boundary ids coloured) with
+      its interior vertex moved by (0.07, -0.05): no cell is a parallelogram. */
+  inline std::function<void(dealii::Triangulation<2> &)> distorted_block()
+  {
+    return [](dealii::Triangulation<2> &tria)
+    {
+      rectangle({2, 2}, dealii::Point<2>(1., 0.), dealii::Point<2>(2.2, 1.1))(tria);
+      for (auto &cell : tria.active_cell_iterators())
+        for (const unsigned int v : cell->vertex_indices())
+          if (std::abs(cell->vertex(v)[0] - 1.6) < 1e-12
+              && std::abs(cell->vertex(v)[1] - 0.55) < 1e-12)
+            cell->vertex(v) += dealii::Point<2>(0.07, -0.05);
+    };
+  }
+
+  /**
+   * The options of the tangent tests (with distorted_block()): Q@p degree with MappingQ@p degree,
+   * E = 1000, nu = 0.3, hardening 50; @p plastic: yield stress 2 and kinematic hardening 30 (the
+   * random states yield), else elastic (1e9); no surface loads yet.
+   */
+  inline AssemblerTestOptions tangent_test_options(const material::KinematicsType     kinematics,
+                                                   const unsigned int                 degree,
+                                                   const bool                         plastic,
+                                                   const mechanics::PlanarModel       planar,
+                                                   const mechanics::VolumetricLocking locking)
+  {
+    AssemblerTestOptions options;
+    options.degree = degree;
+    options.mapping_degree = degree;
+    options.kinematics = kinematics;
+    options.material.youngs_modulus = 1000.;
+    options.material.poissons_ratio = 0.3;
+    options.material.yield_stress = plastic ? 2. : 1e9;
+    options.material.hardening_modulus = 50.;
+    options.material.kinematic_hardening_modulus = plastic ? 30. : 0.;
+    options.planar = planar;
+    options.locking = locking;
+    return options;
   }
 
   /**
@@ -121,7 +162,7 @@ namespace ausroll::test_support
         , mapping(options.mapping_degree)
         , model(material::create_constitutive_model(options.kinematics, options.material, false))
         , boundary_conditions(mechanics::BoundaryConditionParameters{options.conditions})
-        , kinematics(options.planar, 1.)
+        , kinematics(options.planar, 1., &stretch)
         , assembler(mapping,
                     fe,
                     options.n_q_points_1d > 0 ? options.n_q_points_1d : options.degree + 1,
@@ -144,6 +185,16 @@ namespace ausroll::test_support
     }
 
     unsigned int n_dofs() const { return dof_handler.n_dofs(); }
+
+    /** Number of material points whose trial state has plastic strain. */
+    unsigned int n_plastic_points() const
+    {
+      unsigned int n = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const auto &p : points.get_data(cell))
+          n += p->trial.equivalent_plastic_strain > 0.;
+      return n;
+    }
 
     /** A zero vector over all DoFs. */
     dealii::TrilinosWrappers::MPI::Vector vector() const
@@ -203,9 +254,11 @@ namespace ausroll::test_support
     dealii::DoFHandler<dim>                            dof_handler;
     const std::unique_ptr<material::ConstitutiveModel> model;
     const mechanics::BoundaryConditions<dim>           boundary_conditions;
-    const mechanics::PlanarKinematics<dim>             kinematics;
-    const mechanics::Assembler<dim>                    assembler;
-    mechanics::MaterialPointStorage<dim>               points;
+    /** F_zz of generalized plane strain (the kinematics reads it; 1 for the other models). */
+    double                                 stretch = 1.;
+    const mechanics::PlanarKinematics<dim> kinematics;
+    const mechanics::Assembler<dim>        assembler;
+    mechanics::MaterialPointStorage<dim>   points;
 
     dealii::IndexSet                       all;
     dealii::AffineConstraints<double>      none; ///< no constraints (closed)

@@ -42,31 +42,12 @@ namespace
    */
   double tangent_error(const Case &c)
   {
-    test_support::AssemblerTestOptions options;
-    options.degree = c.degree;
-    options.mapping_degree = c.degree;
-    options.kinematics = c.kinematics;
-    options.material.youngs_modulus = 1000.;
-    options.material.poissons_ratio = 0.3;
-    options.material.yield_stress = c.plastic ? 2. : 1e9;
-    options.material.hardening_modulus = 50.;
-    options.material.kinematic_hardening_modulus = c.plastic ? 30. : 0.;
+    test_support::AssemblerTestOptions options = test_support::tangent_test_options(
+        c.kinematics, c.degree, c.plastic, c.planar, c.locking);
     options.conditions
         = {test_support::surface_load(3, mechanics::BoundaryConditionType::pressure, "30 + 5 * x"),
            test_support::surface_load(1, mechanics::BoundaryConditionType::traction, "4; -3 * y")};
-    options.planar = c.planar;
-    options.locking = c.locking;
-    test_support::AssemblerTestProblem<2> problem(
-        options,
-        [](Triangulation<2> &tria)
-        {
-          test_support::rectangle({2, 2}, Point<2>(1., 0.), Point<2>(2.2, 1.1))(tria);
-          for (auto &cell : tria.active_cell_iterators())
-            for (const unsigned int v : cell->vertex_indices())
-              if (std::abs(cell->vertex(v)[0] - 1.6) < 1e-12
-                  && std::abs(cell->vertex(v)[1] - 0.55) < 1e-12)
-                cell->vertex(v) += Point<2>(0.07, -0.05);
-        });
+    test_support::AssemblerTestProblem<2> problem(options, test_support::distorted_block());
     const unsigned int                    n = problem.n_dofs();
     TrilinosWrappers::MPI::Vector        &u = problem.u;
     const TrilinosWrappers::MPI::Vector  &residual = problem.residual;
@@ -86,11 +67,7 @@ namespace
     assemble(u, true);
     if (c.plastic)
     {
-      unsigned int n_plastic = 0;
-      for (const auto &cell : problem.tria.active_cell_iterators())
-        for (const auto &p : problem.points.get_data(cell))
-          n_plastic += p->trial.equivalent_plastic_strain > 0.;
-      EXPECT_GT(n_plastic, 0u) << label(c);
+      EXPECT_GT(problem.n_plastic_points(), 0u) << label(c);
     }
     double scale = 0.;
     for (unsigned int i = 0; i < n; ++i)

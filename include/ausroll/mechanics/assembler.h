@@ -7,6 +7,7 @@
 #include <ausroll/contact/nodal_row_transform.h>
 #include <ausroll/material/constitutive_model.h>
 #include <ausroll/mechanics/boundary_conditions.h>
+#include <ausroll/mechanics/generalized_plane_strain.h>
 #include <ausroll/mechanics/material_point_storage.h>
 #include <ausroll/mechanics/planar_kinematics.h>
 #include <ausroll/mechanics/terms/interface.h>
@@ -47,6 +48,9 @@ namespace ausroll::mechanics
     dealii::TrilinosWrappers::SparseMatrix *matrix = nullptr;
     /** Right-hand side -r of the Newton system, with inhomogeneities (with matrix). */
     dealii::TrilinosWrappers::MPI::Vector *rhs = nullptr;
+    /** Generalized plane strain: int P_zz dV and, with matrix, the border k_ue (its `column`,
+        zeroed by the caller), k_eu (`row`, zeroed) and k_ee (null: not assembled). */
+    GeneralizedPlaneStrain *out_of_plane = nullptr;
   };
 
   /**
@@ -55,12 +59,12 @@ namespace ausroll::mechanics
    * set at a converged pass, active set at an iterate) changes the constraints and the friction
    * row transforms but neither the displacement nor the material states, and re-assembling
    * the cells would only repeat the material evaluations bit for bit. The Assembler decides:
-   * same displacement (bitwise, ghosts included), same time, same mesh, the tangent when asked
-   * for, and the same @ref state. The owner of the material points increments @ref state
-   * whenever they change other than through an assembly (commit, restore, transfer to a new
-   * mesh, re-basing): the trial states are then those of the cached evaluation. Face loads, row
-   * transforms and the condensation are done anew at every assembly. Kept only while it needs
-   * at most @ref max_bytes (3D meshes: usually off).
+   * same displacement (bitwise, ghosts included) and out-of-plane stretch, same time, same mesh,
+   * the tangent when asked for, and the same @ref state. The owner of the material points
+   * increments @ref state whenever they change other than through an assembly (commit, restore,
+   * transfer to a new mesh, re-basing): the trial states are then those of the cached evaluation.
+   * Face loads, row transforms and the condensation are done anew at every assembly. Kept only
+   * while it needs at most @ref max_bytes (3D meshes: usually off).
    */
   struct AssemblyCache
   {
@@ -70,10 +74,13 @@ namespace ausroll::mechanics
     bool                with_matrix = false;   ///< ... with the cell matrices
     std::uint64_t       cached_state = 0;      ///< @ref state of the cached assembly
     double              time = 0.;             ///< its time
-    std::vector<double> solution;              ///< its displacement (local and ghost entries)
-    std::vector<double> matrices, residuals;   ///< cell matrices and residuals by active cell index
-    std::vector<double> min_jacobian;          ///< smallest det F of each cell
-    unsigned long       hits = 0, misses = 0;  ///< statistics (reused / computed assemblies)
+    double              stretch = 1.; ///< its out-of-plane stretch (generalized plane strain)
+    std::vector<double> solution;     ///< its displacement (local and ghost entries)
+    std::vector<double> matrices, residuals; ///< cell matrices and residuals by active cell index
+    std::vector<double> min_jacobian;        ///< smallest det F of each cell
+    /** Generalized plane strain: each cell's k_ue, k_eu (n_dofs each), int P_zz dV and k_ee. */
+    std::vector<double> out_of_plane;
+    unsigned long       hits = 0, misses = 0; ///< statistics (reused / computed assemblies)
     /** The material points by active cell index (quadrature points in order) as at @ref state
         @ref points_state: built once per state instead of a CellDataStorage look-up (a map of
         cell ids and a vector of shared pointers) per cell and assembly. */
@@ -244,6 +251,8 @@ namespace ausroll::mechanics
     const material::ConstitutiveModel &model;
     const BoundaryConditions<dim>     &boundary_conditions;
     const VolumetricLocking            locking; ///< `Model/Volumetric locking treatment`
+    /** Generalized plane strain: the cells' border of the Newton system is assembled too. */
+    const bool out_of_plane;
     /** The element's tables (component of each shape function, DoFs of each node). */
     const AssemblyLayout layout;
 

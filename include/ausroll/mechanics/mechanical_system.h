@@ -33,7 +33,8 @@ namespace ausroll::mechanics
    * entries; every change of `solution` is followed by `solution_ghosted = solution`),
    * `step_start` the last converged solution and `previous_start` the one before it (the
    * predictor's). commit_step() accepts the iterate as converged, restore_step_start() returns to
-   * the last converged state (vectors and trial material states).
+   * the last converged state (vectors and trial material states). Generalized plane strain:
+   * the out-of-plane stretch (@ref out_of_plane) follows the same steps as the displacement.
    *
    * What lies above mechanics/ (linear solver, contact nodes, material-point transfer) is set up by
    * the owner of the system after setup_system() (see scene::Scene::setup_dof_dependents()).
@@ -139,6 +140,10 @@ namespace ausroll::mechanics
     Vector                                 residual_ghosted; ///< residual with ghost entries
 
     MaterialPointStorage<dim> material_points; ///< states of the locally owned cells
+
+    /** Generalized plane strain: the global out-of-plane stretch, its step state and the border
+        of the Newton system (inactive for the other planar models and 3D). */
+    GeneralizedPlaneStrain out_of_plane;
 
     double min_cell_diameter = 1.; ///< smallest vertex distance of the mesh (all ranks)
 

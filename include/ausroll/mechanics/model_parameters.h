@@ -15,7 +15,10 @@ namespace ausroll::mechanics
   {
     plane_strain, ///< eps_zz = 0
     plane_stress, ///< sigma_zz = 0 (out-of-plane stretch solved at each material point)
-    axisymmetric  ///< x = radius r, y = axial coordinate z; hoop strain u_r / r; volume 2 pi r dA
+    axisymmetric, ///< x = radius r, y = axial coordinate z; hoop strain u_r / r; volume 2 pi r dA
+    /** F_zz = lambda, one global unknown of the section, with the axial force int sigma_zz da
+        = `Model/Axial force` (GeneralizedPlaneStrain) */
+    generalized_plane_strain
   };
 
   /**
@@ -37,8 +40,10 @@ namespace ausroll::mechanics
     material::KinematicsType kinematics = material::KinematicsType::finite_strain; ///< `Kinematics`
     PlanarModel              planar_model = PlanarModel::plane_strain; ///< `Planar model`
     double                   thickness = 1.; ///< `Thickness` of plane models (forces scale with it)
-    unsigned int             degree = 2;     ///< `Polynomial degree` of the displacement FE_Q
-    unsigned int quadrature_points = 0;      ///< `Quadrature points` per direction (0: degree+1)
+    /** `Axial force` N = int sigma_zz da on the section (generalized plane strain only; N) */
+    double       axial_force = 0.;
+    unsigned int degree = 2;            ///< `Polynomial degree` of the displacement FE_Q
+    unsigned int quadrature_points = 0; ///< `Quadrature points` per direction (0: degree+1)
     /** `Volumetric locking treatment` */
     VolumetricLocking volumetric_locking = VolumetricLocking::none;
 

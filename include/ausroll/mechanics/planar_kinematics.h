@@ -77,14 +77,29 @@ namespace ausroll::mechanics
    *  - plane stress: F_zz = 1 here, the PlaneStressDriver finds the actual stretch; dV = thickness
    * dA.
    *  - axisymmetric: (x, y) = (r, z); F_thetatheta = 1 + u_r / r; dV = 2 pi r dA.
+   *  - generalized plane strain: F_zz = lambda, the one out-of-plane unknown of the section
+   * (GeneralizedPlaneStrain::stretch, read through the pointer given to the constructor; it does
+   * not depend on the displacement DoFs, so the hoop entry is NoHoopEntry); dV = thickness dA.
    * For dim = 3 the embedding is the identity.
    */
   template <int dim>
   class PlanarKinematics
   {
   public:
-    /** Kinematics of @p model with out-of-plane @p thickness (ignored when axisymmetric). */
-    PlanarKinematics(const PlanarModel model, const double thickness);
+    /**
+     * Kinematics of @p model with out-of-plane @p thickness (ignored when axisymmetric); for
+     * generalized plane strain F_zz = *@p out_of_plane_stretch (the current lambda, owned by
+     * the caller, e.g. MechanicalSystem::out_of_plane; nullptr: 1).
+     */
+    PlanarKinematics(const PlanarModel model,
+                     const double      thickness,
+                     const double     *out_of_plane_stretch = nullptr);
+
+    /** The kinematics of subsection `Model` (`Planar model`, `Thickness`), as above. */
+    PlanarKinematics(const ModelParameters &model, const double *out_of_plane_stretch)
+        : PlanarKinematics(model.planar_model, model.thickness, out_of_plane_stretch)
+    {
+    }
 
     /** F = I + Grad u embedded in 3D, at reference point @p X with displacement @p u. */
     dealii::Tensor<2, 3> deformation_gradient(const dealii::Tensor<2, dim> &grad_u,
@@ -115,7 +130,17 @@ namespace ausroll::mechanics
     {
       if (dim == 3 || is_axisymmetric())
         return 3;
-      return mean_dilatation && model == PlanarModel::plane_strain ? 3 : 2;
+      return mean_dilatation
+                     && (model == PlanarModel::plane_strain
+                         || model == PlanarModel::generalized_plane_strain)
+                 ? 3
+                 : 2;
+    }
+
+    /** True for generalized plane strain (dim = 2): F_zz is the global unknown lambda. */
+    bool is_generalized_plane_strain() const
+    {
+      return model == PlanarModel::generalized_plane_strain && dim == 2;
     }
 
     /** True for the axisymmetric model (shape function values enter the gradient). */
@@ -135,11 +160,18 @@ namespace ausroll::mechanics
       return f(NoHoopEntry());
     }
 
+    /** F_zz of generalized plane strain (the current lambda), 1 for the other models. */
+    double out_of_plane_stretch() const
+    {
+      return is_generalized_plane_strain() && stretch != nullptr ? *stretch : 1.;
+    }
+
     /** The planar model. */
     PlanarModel planar_model() const { return model; }
 
   private:
-    PlanarModel model;     ///< idealisation
-    double      thickness; ///< out-of-plane thickness of plane models
+    PlanarModel   model;     ///< idealisation
+    double        thickness; ///< out-of-plane thickness of plane models
+    const double *stretch;   ///< lambda of generalized plane strain (nullptr: 1)
   };
 } // namespace ausroll::mechanics

@@ -58,7 +58,11 @@ namespace ausroll::solver
     double length_scale() const override { return system.min_cell_diameter; }
     double increment_residual_product() const override
     {
-      return system.increment * system.free_residual;
+      const double product = system.increment * system.free_residual;
+      // generalized plane strain: + dlambda r_lambda (r_lambda = dPi/dlambda)
+      return system.out_of_plane.active
+                 ? product + system.out_of_plane.increment * system.out_of_plane.residual()
+                 : product;
     }
     /** The contact strategy's update of the statuses at a converged state (nested active set):
         the reactions of the last assembly decide. */

@@ -128,11 +128,25 @@ namespace ausroll::solver
                           dealii::TrilinosWrappers::MPI::Vector        &x,
                           const dealii::TrilinosWrappers::MPI::Vector  &b) const;
 
+    /**
+     * Solve A x_k = b_k for several right-hand sides with one factorisation (direct) or one
+     * AMG set-up (iterative; one Krylov solve each): the bordered system of generalized plane
+     * strain. The iterations of the info are summed over the right-hand sides.
+     */
+    LinearSolveInfo
+    solve(const dealii::TrilinosWrappers::SparseMatrix                     &A,
+          const std::vector<dealii::TrilinosWrappers::MPI::Vector *>       &x,
+          const std::vector<const dealii::TrilinosWrappers::MPI::Vector *> &b) const;
+
   private:
-    /** Direct solve with a kept symbolic factorisation of @p A by Amesos package @p package. */
+    using VectorList = std::vector<dealii::TrilinosWrappers::MPI::Vector *>;
+    using ConstVectorList = std::vector<const dealii::TrilinosWrappers::MPI::Vector *>;
+
+    /** Direct solve with a kept symbolic factorisation of @p A by Amesos package @p package:
+        one numeric factorisation, a solve for each of @p b into @p x. */
     void solve_direct(const dealii::TrilinosWrappers::SparseMatrix &A,
-                      dealii::TrilinosWrappers::MPI::Vector        &x,
-                      const dealii::TrilinosWrappers::MPI::Vector  &b,
+                      const VectorList                             &x,
+                      const ConstVectorList                        &b,
                       const std::string                            &package) const;
 
     /** Let KLU refactorise with its last pivot order (Amesos "Refactorize"). */

@@ -164,6 +164,7 @@ namespace ausroll::mechanics
     {
       point.s = std::pow(scratch.J0 / J, alpha);
       point.kappa = std::pow(point.s, 1. - n_vol);
+      point.s_zz = n_vol == 3 ? point.s : 1.;
       for (unsigned int a = 0; a < n_vol; ++a)
         for (unsigned int b = 0; b < n_vol; ++b)
           point.F_material[a][b] *= point.s;
@@ -210,6 +211,29 @@ namespace ausroll::mechanics
     for (unsigned int i = 0; i < layout.n_dofs; ++i)
       for (unsigned int j = 0; j < layout.n_dofs; ++j)
         matrix(i, j) += scratch.q_coefficient[i] * (scratch.dlnJ0[j] - scratch.dlnJ[j]);
+  }
+
+  template <int dim, typename Hoop>
+  void FBar<dim, Hoop>::add_out_of_plane_row(const FBarPoint    &point,
+                                             const Tensor<2, 3> &F,
+                                             const double        dV,
+                                             const Tensor<2, 3> &P_bar,
+                                             const Tensor<4, 3> &A,
+                                             const Scratch      &scratch,
+                                             Vector<double>     &row) const
+  {
+    // Qt_zz of add_tangent(): the zz row of the rank-one term (the "shape gradient" of lambda
+    // is e_z (x) e_z)
+    const Tensor<2, 3> EF = small_strain ? E : E * F;
+    double             sum = 0.;
+    for (unsigned int k = 0; k < 3; ++k)
+      for (unsigned int l = 0; l < 3; ++l)
+        sum += A[2][2][k][l] * EF[k][l];
+    const double Qt_zz = small_strain
+                             ? alpha * sum
+                             : point.kappa * ((alpha - 1.) * P_bar[2][2] + alpha * point.s * sum);
+    for (unsigned int j = 0; j < layout.n_dofs; ++j)
+      row(j) += Qt_zz * dV * (scratch.dlnJ0[j] - scratch.dlnJ[j]);
   }
 
   template class FBar<2, NoHoopEntry>;

@@ -38,6 +38,7 @@ namespace ausroll::mechanics
           , kinematics(kinematics)
           , model(model)
           , volumetric(std::move(volumetric))
+          , out_of_plane(kinematics.is_generalized_plane_strain())
       {
       }
 
@@ -99,6 +100,18 @@ namespace ausroll::mechanics
                                      const TrilinosWrappers::MPI::Vector &solution) const override;
 
     private:
+      /**
+       * Generalized plane strain: the border of the Newton system at one point (weight @p dV)
+       * into @p local: k_ue_i = kappa s_zz (A : e_z e_z) : G_i dV, k_eu_j = kappa s (A : G_j)_zz dV
+       * plus the F-bar term, k_ee = kappa s_zz A_zzzz dV (P = kappa P(F_bar), dF_bar/dlambda =
+       * s_zz e_z e_z: FBarPoint).
+       */
+      void add_out_of_plane_border(const FBarPoint    &point,
+                                   const Tensor<2, 3> &F,
+                                   const double        dV,
+                                   Scratch            &scratch,
+                                   LocalSystem        &local) const;
+
       /** Reinitialise the FEValues of @p scratch on @p cell and evaluate u and Grad u. */
       CellFields<dim> evaluate_fields(const ActiveCell                    &cell,
                                       const TrilinosWrappers::MPI::Vector &solution,
@@ -111,7 +124,35 @@ namespace ausroll::mechanics
       const PlanarKinematics<dim>       &kinematics;
       const material::ConstitutiveModel &model;
       const Volumetric                   volumetric;
+      const bool out_of_plane; ///< generalized plane strain: assemble the border too
     };
+
+    template <int dim, typename Hoop, typename Volumetric>
+    void InternalForceTerm<dim, Hoop, Volumetric>::add_out_of_plane_border(const FBarPoint &point,
+                                                                           const Tensor<2, 3> &F,
+                                                                           const double        dV,
+                                                                           Scratch     &scratch,
+                                                                           LocalSystem &local) const
+    {
+      const Tensor<4, 3> &A = scratch.A;
+      const double        column_factor = point.kappa * point.s_zz * dV;
+      const double        row_factor = point.kappa * point.s * dV;
+      local.axial_stiffness += A[2][2][2][2] * column_factor;
+      for (unsigned int i = 0; i < layout.n_dofs; ++i)
+      {
+        const unsigned int c = layout.component[i];
+        double             column = 0., row = 0.;
+        for (unsigned int J = 0; J < dim; ++J)
+        {
+          column += A[c][J][2][2] * scratch.g[i][J];
+          row += A[2][2][c][J] * scratch.g[i][J];
+        }
+        local.column(i) += column * column_factor;
+        local.row(i) += row * row_factor;
+      }
+      volumetric.add_out_of_plane_row(
+          point, F, dV, scratch.P_bar, A, scratch.volumetric, local.row);
+    }
 
     template <int dim, typename Hoop, typename Volumetric>
     CellFields<dim> InternalForceTerm<dim, Hoop, Volumetric>::evaluate_fields(
@@ -219,6 +260,8 @@ namespace ausroll::mechanics
 
         for (unsigned int i = 0; i < n_dofs; ++i)
           cell_residual(i) += contract<dim>(P, component[i], g[i], hoop[i]) * dV;
+        if (out_of_plane)
+          local.axial_work += P[2][2] * dV;
 
         if (!need_matrix)
           continue;
@@ -257,6 +300,8 @@ namespace ausroll::mechanics
         }
 
         volumetric.add_tangent(point, F, dV, g, hoop, P_bar, A, scratch.volumetric, cell_matrix);
+        if (out_of_plane)
+          add_out_of_plane_border(point, F, dV, scratch, local);
       }
     }
 

@@ -46,3 +46,12 @@ foreach(_method cg gmres)
          --x-result pressure_0 --y-result outer_ux --x-reference pressure --y-reference u_outer
          --rel-tol 0.005 --x-min 1)
 endforeach()
+
+# Generalized plane strain (tests/checks/check_generalized_plane_strain.py): a free section heated
+# uniformly is stress-free with lambda = 1 + alpha dT (small strain; finite strain with Q1 F-bar),
+# beside plane strain's sigma_zz = -E alpha dT (1e-8); the open-ended elastic Lame cylinder,
+# eps_zz = -2 nu p a^2 / (E (b^2 - a^2)), sigma_zz = 0 (1e-5, the mesh's FE error); np = 2 equal
+# to np = 1 (1e-10); a resume identical to the uninterrupted run.
+ausroll_add_script_check(NAME generalized_plane_strain
+  SCRIPT ${AUSROLL_CHECKS_DIR}/check_generalized_plane_strain.py)
+set_tests_properties(check/generalized_plane_strain PROPERTIES PROCESSORS 2)

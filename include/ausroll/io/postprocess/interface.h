@@ -25,6 +25,7 @@
 #include <ausroll/io/solution_writer.h>
 #include <ausroll/material/constitutive_model.h>
 #include <ausroll/mechanics/boundary_conditions.h>
+#include <ausroll/mechanics/generalized_plane_strain.h>
 #include <ausroll/mechanics/material_point_storage.h>
 #include <ausroll/thermal/thermal_system.h>
 
@@ -64,6 +65,8 @@ namespace ausroll::io
     double       wall_seconds = 0.;     ///< wall time since the start of the run
     /** The temperature field (thermal scenes; null when isothermal). */
     const thermal::ThermalSystem<dim> *thermal = nullptr;
+    /** The out-of-plane stretch of generalized plane strain (null or inactive otherwise). */
+    const mechanics::GeneralizedPlaneStrain *out_of_plane = nullptr;
   };
 
   /**

@@ -35,6 +35,7 @@ namespace ausroll::io
     bool         thermal = false;   ///< a temperature field is solved (time in s, its columns)
     bool         phases = false;    ///< `Phases` enabled (phase fraction columns)
     bool         bainite = false;   ///< bainite kinetics given (bainite columns)
+    bool generalized_plane_strain = false; ///< `Model/Planar model` (stretch_z, axial_force)
     /** `Stages/Stage k/End time` of the stages (empty: no stages, no stage column). */
     std::vector<double> stage_end_times = {};
   };

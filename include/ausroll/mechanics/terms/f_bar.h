@@ -23,7 +23,10 @@ namespace ausroll::mechanics
     dealii::Tensor<2, 3> F_material; ///< F_bar (F without F-bar)
     double               s = 1.;     ///< F_bar = s F (in the scaled block; 1 for small strain)
     double               kappa = 1.; ///< P = kappa P(F_bar), kappa = s^(1 - n)
-    dealii::Tensor<2, 3> F_inv;      ///< F^-1 (large strain with F-bar; else zero)
+    /** dF_bar_zz / dF_zz at fixed in-plane displacement: s where the scaling covers zz
+        (n = 3), else 1 (J0 / J does not depend on a uniform F_zz; generalized plane strain) */
+    double               s_zz = 1.;
+    dealii::Tensor<2, 3> F_inv; ///< F^-1 (large strain with F-bar; else zero)
   };
 
   /** The cell's fields the internal-force term has evaluated (at its reinitialised FEValues). */
@@ -101,6 +104,19 @@ namespace ausroll::mechanics
                      Scratch                                    &scratch,
                      dealii::FullMatrix<double>                 &matrix) const;
 
+    /**
+     * Generalized plane strain: the F-bar part of the row k_eu = d(int P_zz dV) / du_j at one
+     * point, Qt_zz dV (dlnJ0_j - dlnJ_j) with Qt of add_tangent() (call after it: it reuses the
+     * d ln J of @p scratch), added to @p row.
+     */
+    void add_out_of_plane_row(const FBarPoint            &point,
+                              const dealii::Tensor<2, 3> &F,
+                              const double                dV,
+                              const dealii::Tensor<2, 3> &P_bar,
+                              const dealii::Tensor<4, 3> &A,
+                              const Scratch              &scratch,
+                              dealii::Vector<double>     &row) const;
+
   private:
     const AssemblyLayout        &layout;
     const PlanarKinematics<dim> &kinematics;
@@ -150,6 +166,16 @@ namespace ausroll::mechanics
                      const dealii::Tensor<4, 3> &,
                      Scratch &,
                      dealii::FullMatrix<double> &) const
+    {
+    }
+
+    void add_out_of_plane_row(const FBarPoint &,
+                              const dealii::Tensor<2, 3> &,
+                              const double,
+                              const dealii::Tensor<2, 3> &,
+                              const dealii::Tensor<4, 3> &,
+                              const Scratch &,
+                              dealii::Vector<double> &) const
     {
     }
   };

@@ -57,12 +57,16 @@ namespace ausroll::mechanics
   /** The local matrix and vectors of one cell and its failure (the WorkStream copy data). */
   struct LocalSystem
   {
-    explicit LocalSystem(const unsigned int n_dofs)
+    /** A local system of @p n_dofs DoFs; with @p out_of_plane the border of generalized plane
+        strain too. */
+    explicit LocalSystem(const unsigned int n_dofs, const bool out_of_plane = false)
         : cell_matrix(n_dofs, n_dofs)
         , cell_residual(n_dofs)
         , cell_external(n_dofs)
         , cell_free(n_dofs)
         , dofs(n_dofs)
+        , column(out_of_plane ? n_dofs : 0)
+        , row(out_of_plane ? n_dofs : 0)
     {
     }
 
@@ -71,10 +75,15 @@ namespace ausroll::mechanics
     dealii::Vector<double>     cell_external; ///< external force (surface loads)
     dealii::Vector<double>     cell_free;     ///< residual of the free equations (row transforms)
     std::vector<dealii::types::global_dof_index> dofs;
-    std::size_t                                  cell_index = 0; ///< active cell index
-    bool                                         ok = true;
-    double                                       min_jacobian = 1e300;
-    std::string                                  message;
+    /** Generalized plane strain (GeneralizedPlaneStrain; empty otherwise): the cell's part of
+        k_ue = dr/dlambda (column) and of k_eu = d(int P_zz dV)/du (row). */
+    dealii::Vector<double> column, row;
+    double                 axial_work = 0.;      ///< ... int P_zz dV over the cell
+    double                 axial_stiffness = 0.; ///< ... k_ee of the cell
+    std::size_t            cell_index = 0;       ///< active cell index
+    bool                   ok = true;
+    double                 min_jacobian = 1e300;
+    std::string            message;
 
     /** Mark the cell failed with the reason @p text. */
     void fail(const std::string &text)
