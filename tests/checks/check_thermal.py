@@ -116,6 +116,19 @@ mixture      (ctest check/thermal_trip) the same block, K = 0, compressed in y (
              1e-8 of sigma_y,M A (the return map solves the yield condition to 1e-13, the history
              has 10 digits; Newton to 1e-12 of the force level: the default 1e-6 leaves 2e-7 in
              the reaction of the finite-strain models).
+carbon_yield (ctest check/thermal_trip) pure martensite at two carbon contents: the block at 20 C
+             from the start (faces held at 20 C, Koistinen-Marburger coefficient 10 1/K: f = 1
+             - exp(-10 (Ms - 20)) is 1 in double at the first step for C = 0.2 and 0.8), with
+             Phases/Martensite yield stress = 413 + 1720*sqrt(C) (Krauss' fit, doc/theory.md
+             section 8) and Martensite hardening modulus = 3000 + 2000*C + T, compressed in y
+             (top face -0.1 t mm, 10 steps, small strain). The transformation strain is
+             isotropic and stress-free, so the mechanical axial strain is eps_m = u_y/5 -
+             (theta_tr - 1), theta_tr = (1 + dV/V(C))^(1/3), and once yielded the uniaxial
+             closed form of linear hardening |sigma| = (sigma_y,M(C) + H_M |eps_m|) / (1 + H_M/E);
+             the reaction on y = 5 is A |sigma| in every plastic step, 1e-8 of sigma_y,M A (the
+             return map solves the yield condition to 1e-13, the history has 10 digits, Newton
+             to 1e-12 of the force level); the two carbon contents yield at their own
+             sigma_y,M (different by 47 %).
 resume       the conduction run interrupted after step 25 (checkpoints every 10 steps) and resumed
              gives the same history as the uninterrupted run, to the last digit.
 
@@ -592,6 +605,38 @@ def main():
                   f"worst deviation {worst:.2e} of sigma_y,M A")
             checks(f"mixture ({kinematics}): reaction = A ((1 - f) sigma_0 + f sigma_y,M(T)) (stretches) in every "
                    "plastic step to 1e-8", worst < 1e-8 and f_end > 0.5)
+
+    if "carbon_yield" in cases:
+        yield_m = "413 + 1720*sqrt(C)"
+        hardening_m = "3000 + 2000*C + T"
+        for carbon in (0.2, 0.8):
+            sigma_m = 413.0 + 1720.0 * math.sqrt(carbon)
+            h_m = 3000.0 + 2000.0 * carbon + 20.0
+            theta_tr = (1.0 + (4.64 - 0.53 * carbon) / 100.0) ** (1.0 / 3.0)
+            settings = [f"Thermal/Thermal expansion={ALPHA}", "Thermal/Initial temperature=20",
+                        "Thermal/Specific heat=1", "Phases/Enabled=true", f"Phases/Carbon content={carbon}",
+                        "Phases/Koistinen-Marburger coefficient=10", "Loading/Number of steps=10",
+                        "Material/Hardening modulus=0", "Thermal/Taylor-Quinney coefficient=0",
+                        "Boundary conditions/Condition 3/Value=-0.1*t",
+                        f"Phases/Martensite yield stress={yield_m}",
+                        f"Phases/Martensite hardening modulus={hardening_m}",
+                        "Solver/Residual tolerance=1e-12"] + faces_held_at("20")
+            directory = f"carbon_yield_{carbon:g}"
+            run(ausroll, block, settings, directory)
+            worst, plastic, fractions = 0.0, 0, []
+            for row in history(directory)[1:]:
+                eps_m = abs(float(row["corner_uy"]) / 5.0 - (theta_tr - 1.0))
+                fractions.append(float(row["martensite_min"]))
+                if E * eps_m <= sigma_m:
+                    continue
+                plastic += 1
+                expected = (sigma_m + h_m * eps_m) / (1.0 + h_m / E) * 40.0
+                worst = max(worst, abs(abs(float(row["reaction_3_y"])) - expected) / (sigma_m * 40.0))
+            print(f"carbon_yield (C = {carbon}): sigma_y,M {sigma_m:.4f} MPa, H_M {h_m:.1f} MPa, {plastic} plastic "
+                  f"steps, worst reaction deviation {worst:.2e} of sigma_y,M A, martensite {min(fractions):.17g}")
+            checks(f"carbon_yield (C = {carbon}): pure martensite from the first step", min(fractions) == 1.0)
+            checks(f"carbon_yield (C = {carbon}): reaction = A (sigma_y,M(C) + H_M |eps_m|) / (1 + H_M/E) to 1e-8",
+                   worst < 1e-8 and plastic >= 4)
 
     slide = os.path.join(scenes, "block_slide.prm")
     thermal_on = ["Thermal/Enabled=true", "Thermal/Thermal expansion=0", "Thermal/Initial temperature=20",
