@@ -75,6 +75,24 @@ namespace ausroll::material
                       "(default lower bainite, 4.64 - 1.43 C; upper bainite 4.64 - 2.21 C: the "
                       "dilatometric relations of the ASM Handbook vol. 4, after Lement 1959).");
     TransformationPlasticityParameters::declare_parameters(prm);
+    prm.declare_entry("TRIP heating",
+                      "false",
+                      Patterns::Bool(),
+                      "Count the TRIP dissipation sigma : Delta eps_tp = kappa |dev sigma|^2 of "
+                      "every step as plastic work: it heats the workpiece with Thermal/Taylor-"
+                      "Quinney coefficient, as the plastic work does (needs TRIP coefficient > 0). "
+                      "false: only the plastic flow heats.");
+    prm.declare_entry("Latent heat",
+                      "0",
+                      Patterns::Double(),
+                      "Heat released per unit mass of martensite formed, in the unit of "
+                      "Thermal/Specific heat times K (mm^2/s^2: 1 J/g = 1e9), the source rho L "
+                      "df_M/dt of the heat equation (doc/theory.md section 8 on values). 0: none.");
+    prm.declare_entry("Bainite latent heat",
+                      "0",
+                      Patterns::Double(),
+                      "Heat released per unit mass of bainite formed (mm^2/s^2, as Latent heat), "
+                      "the source rho L_B df_B/dt. 0: none.");
     prm.leave_subsection();
   }
 
@@ -94,7 +112,20 @@ namespace ausroll::material
     bainite_finish = prm.get("Bainite finish times");
     bainite_volume_change = prm.get("Bainite volume change");
     mechanics.parse_parameters(prm, input_directory);
+    trip_heating = prm.get_bool("TRIP heating");
+    latent_heat = prm.get_double("Latent heat");
+    bainite_latent_heat = prm.get_double("Bainite latent heat");
     prm.leave_subsection();
+    require(latent_heat >= 0., "Phases/Latent heat", "must not be negative");
+    require(bainite_latent_heat >= 0., "Phases/Bainite latent heat", "must not be negative");
+    require(!trip_heating || mechanics.trip_coefficient > 0.,
+            "Phases/TRIP heating",
+            "heats by the TRIP dissipation: set Phases/TRIP coefficient > 0 too");
+    require(enabled || (!trip_heating && latent_heat == 0. && bainite_latent_heat == 0.),
+            trip_heating       ? "Phases/TRIP heating"
+            : latent_heat > 0. ? "Phases/Latent heat"
+                               : "Phases/Bainite latent heat",
+            "heats by the transformation: set Phases/Enabled = true");
     require(enabled || !mechanics.active(),
             mechanics.trip_coefficient > 0.    ? "Phases/TRIP coefficient"
             : mechanics.martensite_yield_given ? "Phases/Martensite yield stress"
@@ -132,6 +163,8 @@ namespace ausroll::material
   {
     if (bainite.active())
       dv_bainite.emplace(prm.bainite_volume_change, "Phases/Bainite volume change");
+    if (prm.trip_heating && prm.mechanics.trip_coefficient > 0.)
+      trip_heat.emplace(prm.mechanics);
   }
 
   double PhaseTransformationModel::martensite_start(const double C) const
@@ -186,6 +219,18 @@ namespace ausroll::material
     state.carbon = old.carbon;
     inner->evaluate(remove_stretch(F, theta), old, state, P, tangent);
     scale_response(P, tangent, theta);
+    if (trip_heat)
+    {
+      // the TRIP dissipation of the step, kappa dev(sigma) : dev(sigma) per unit volume (per
+      // reference volume with J, as the plastic work of ThermalExpansionModel)
+      const double kappa = trip_heat->trip_compliance(PhaseStep::of(old, state));
+      if (kappa > 0.)
+      {
+        const SymmetricTensor<2, 3> s = deviator(state.stress);
+        const double                J = inner->is_small_strain() ? 1. : determinant(F);
+        state.plastic_work += J * kappa * (s * s);
+      }
+    }
   }
 
   void PhaseTransformationModel::rebase(MaterialState &state, const Tensor<2, 3> &F) const

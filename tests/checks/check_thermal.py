@@ -129,6 +129,27 @@ carbon_yield (ctest check/thermal_trip) pure martensite at two carbon contents: 
              return map solves the yield condition to 1e-13, the history has 10 digits, Newton
              to 1e-12 of the force level); the two carbon contents yield at their own
              sigma_y,M (different by 47 %).
+trip_heat    (ctest check/thermal_trip) the TRIP dissipation and the latent heat in the heat
+             source: the 3D block insulated (no thermal conditions: adiabatic, the source is
+             homogeneous, so T is uniform) under a constant uniaxial traction sigma = 200 MPa on
+             x = 10 (below the yield stress), TRIP coefficient K = 1e-4 1/MPa, Phases/TRIP heating
+             = true, specific heat 4.6e6 (rho c = 0.0361 MPa/K: a rise of tens of K, so that the
+             history's 10 digits resolve 1e-8 of it). (a) bainite: held at 300 C (above Ms), TTT
+             rows 200 C: 15 / 300 s and 800 C: 15 / 300 s (the same times at every temperature:
+             the JMAK fraction f_B(t) does not depend on the temperature rise), Bainite latent
+             heat 1e8 mm^2/s^2 (0.1 J/g), 8 steps of 15 s: every step's TRIP strain is kappa dev
+             sigma with dev sigma fixed by the dead load, so the dissipation of a step is
+             K sigma^2 (phi(f_n) - phi(f_n-1)) exactly, and T(t_n) = 300 + (beta K sigma^2
+             phi(f_B(t_n)) + rho L_B f_B(t_n)) / (rho c); (b) martensite: started at 20 C below
+             Ms (Ms 110.9 C at 0.8 wt% C): KM's f = 1 - exp(-b (Ms - 20)) forms in the first step,
+             then the block is hotter and nothing more forms; Latent heat 1e8 mm^2/s^2: T = 20 +
+             (beta K sigma^2 phi(f) + rho L f) / (rho c) from the first step on. Both to 1e-8 of
+             the final rise (backward Euler of a homogeneous source is exact; the history's 10
+             digits of T ~ 300 C resolve 1e-7 K; the kinetics use the
+             committed temperature, which is not the rise's: JMAK is temperature-independent
+             here and KM's fraction is the first step's); (c) (a) with TRIP heating = false
+             and no latent heat: T stays 300 C (1e-6 K; the TRIP dissipation is not heat, as
+             before this option).
 resume       the conduction run interrupted after step 25 (checkpoints every 10 steps) and resumed
              gives the same history as the uninterrupted run, to the last digit.
 
@@ -637,6 +658,51 @@ def main():
             checks(f"carbon_yield (C = {carbon}): pure martensite from the first step", min(fractions) == 1.0)
             checks(f"carbon_yield (C = {carbon}): reaction = A (sigma_y,M(C) + H_M |eps_m|) / (1 + H_M/E) to 1e-8",
                    worst < 1e-8 and plastic >= 4)
+
+    if "trip_heat" in cases:
+        sigma, K, beta = 200.0, 1e-4, 0.9
+        rho, c, latent = 7.85e-9, 4.6e6, 1e8
+        rho_c = rho * c
+        n = math.log(math.log(0.01) / math.log(0.99)) / math.log(300.0 / 15.0)
+        k = -math.log(0.99) / 15.0 ** n
+
+        def phi(z):
+            return z * (1.0 - math.log(z)) if z > 0.0 else 0.0
+
+        base = ["Boundary conditions/Number of conditions=4", "Boundary conditions/Condition 3/Boundary id=1",
+                "Boundary conditions/Condition 3/Type=traction", f"Boundary conditions/Condition 3/Value={sigma}; 0; 0",
+                "Thermal/Thermal expansion=0", f"Thermal/Specific heat={c}", "Phases/Enabled=true",
+                f"Phases/Carbon content={CARBON}", f"Phases/TRIP coefficient={K}", "Solver/Absolute residual tolerance=1e-8"]
+        bainite = base + ["Thermal/Initial temperature=300", "Loading/End time=120", "Loading/Number of steps=8",
+                          "Phases/Bainite start times=200: 15, 800: 15", "Phases/Bainite finish times=200: 300, 800: 300"]
+        run(ausroll, block, bainite + ["Phases/TRIP heating=true", f"Phases/Bainite latent heat={latent}"],
+            "trip_heat_bainite")
+        worst_T, worst, rise = 0.0, 0.0, 0.0
+        for row in history("trip_heat_bainite")[1:]:
+            f_b = 1.0 - math.exp(-k * float(row["time"]) ** n)
+            rise = (beta * K * sigma ** 2 * phi(f_b) + rho * latent * f_b) / rho_c
+            worst_T = max(worst_T, abs(float(row["T_mean"]) - 300.0 - rise))
+            worst = max(worst, abs(float(row["bainite_mean"]) - f_b))
+        worst = max(worst, worst_T / rise)  # of the final (largest) rise: the column has 10 digits
+        print(f"trip_heat (bainite): final f_B {f_b:.6f}, rise {rise:.6f} K (TRIP {beta * K * sigma ** 2 * phi(f_b) / rho_c:.4f} "
+              f"K, latent {rho * latent * f_b / rho_c:.4f} K), worst relative deviation {worst:.2e}")
+        checks("trip_heat (bainite): T = T0 + (beta K sigma^2 phi(f_B) + rho L_B f_B) / (rho c) to 1e-8",
+               worst < 1e-8 and f_b > 0.4)
+
+        run(ausroll, block, base + ["Thermal/Initial temperature=20", "Loading/Number of steps=4",
+                                    "Phases/TRIP heating=true", f"Phases/Latent heat={latent}"], "trip_heat_martensite")
+        f_m = martensite(20.0)
+        rise = (beta * K * sigma ** 2 * phi(f_m) + rho * latent * f_m) / rho_c
+        worst = 0.0
+        for row in history("trip_heat_martensite")[1:]:
+            worst = max(worst, abs(float(row["T_mean"]) - 20.0 - rise) / rise, abs(float(row["martensite_mean"]) - f_m))
+        print(f"trip_heat (martensite): f_M {f_m:.6f}, rise {rise:.6f} K, worst relative deviation {worst:.2e}")
+        checks("trip_heat (martensite): T = T0 + (beta K sigma^2 phi(f_M) + rho L f_M) / (rho c) to 1e-8", worst < 1e-8)
+
+        run(ausroll, block, bainite, "trip_heat_off")
+        unchanged = all(abs(float(row["T_mean"]) - 300.0) < 1e-6 for row in history("trip_heat_off"))
+        print(f"trip_heat (off): T_mean stays 300 C: {unchanged}")
+        checks("trip_heat (off): without TRIP heating and latent heat the block stays at 300 C (1e-6 K)", unchanged)
 
     slide = os.path.join(scenes, "block_slide.prm")
     thermal_on = ["Thermal/Enabled=true", "Thermal/Thermal expansion=0", "Thermal/Initial temperature=20",

@@ -39,9 +39,17 @@ namespace ausroll::material
     std::string bainite_finish;
     /** `Bainite volume change` austenite to bainite in per cent, expression of C. */
     std::string bainite_volume_change = "4.64 - 1.43*C";
-    /** `TRIP coefficient`, `Martensite yield stress`, `Bainite yield stress`: the mechanics of
-        the transformation in the return map (TransformationPlasticity). */
+    /** `TRIP coefficient`, `Martensite yield stress`, `Martensite hardening modulus`, `Bainite
+        yield stress`: the mechanics of the transformation in the return map
+        (TransformationPlasticity). */
     TransformationPlasticityParameters mechanics;
+    /** `TRIP heating`: the TRIP dissipation joins the plastic work that heats the workpiece. */
+    bool trip_heating = false;
+    /** `Latent heat` of martensite per unit mass (mm^2/s^2, the unit of Thermal/Specific heat
+        times K: 1 J/g = 1e9 mm^2/s^2), released as martensite forms (the thermal source). */
+    double latent_heat = 0.;
+    /** `Bainite latent heat` per unit mass (mm^2/s^2). */
+    double bainite_latent_heat = 0.;
     /** Folder of the `.prm` file (resolves `file:` tables). */
     std::string input_directory;
 
@@ -77,6 +85,11 @@ namespace ausroll::material
    * - the fractions of the step are written into the trial state before the inner model runs:
    *   its return map reads them (PhaseStep::of(old, state)) for TRIP and the mixture rule of the
    *   yield stress (`TRIP coefficient`, `Martensite yield stress`, TransformationPlasticity).
+   * - TRIP heating (`TRIP heating`, off by default): the TRIP dissipation of the step,
+   *   J kappa dev(sigma) : dev(sigma) per unit reference volume (Delta eps_tp = kappa dev sigma
+   *   with sigma the Cauchy stress at the end of the step; exact in small strain), is added to
+   *   state.plastic_work after the inner model (ThermalExpansionModel) has written the plastic
+   *   part, so the heat source beta (W_n+1 - W_n) / dt counts it with the Taylor-Quinney factor.
    * Not yet: the mechanical stabilisation of austenite, the hardening memory of the austenite.
    */
   class PhaseTransformationModel : public WrappedModel
@@ -124,6 +137,9 @@ namespace ausroll::material
     BainiteKinetics               bainite;          ///< TTT kinetics (may be inactive)
     std::optional<CarbonFunction> dv_bainite;       ///< dV/V(C) of bainite, per cent
     double                        step_length = 0.; ///< dt of the current step
+
+    /** TRIP of the TRIP heating (empty: the TRIP dissipation is not counted as heat). */
+    std::optional<TransformationPlasticity> trip_heat;
 
     double         b;  ///< Koistinen-Marburger coefficient (1/K)
     CarbonFunction ms; ///< Ms(C)
