@@ -881,3 +881,26 @@ TEST(TransformationPlasticity, BadCarbonExpressionsNameTheEntry)
   EXPECT_NE(message("", "1000").find("Phases/Martensite hardening modulus: hardens the"),
             std::string::npos);
 }
+
+TEST(PhaseTransformationModel, MechanicalStabilisationLowersMs)
+{
+  // Ms(C, alpha) = Ms(C) - G_0 / S (sqrt(1 + alpha / eps_0) - 1) with the option (defaults of
+  // MUCG46: G_0 = 35.11 J/mol, eps_0 = 0.1, S = 6.94 J/(mol K)), Ms(C) without it at any alpha;
+  // the KM fraction follows the shifted Ms.
+  const ThermalExpansionParameters thermal = expansion(0.);
+  PhaseParameters                  p = phases();
+  const PhaseTransformationModel   plain(
+      create_constitutive_model(KinematicsType::small_strain, steel(), false, &thermal), p);
+  p.mechanical_stabilisation = true;
+  const PhaseTransformationModel stabilised(
+      create_constitutive_model(KinematicsType::small_strain, steel(), false, &thermal), p);
+  const double ms = 539. - 423. * 0.8 - 30.4 * 0.55 - 17.7 * 3.25 - 12.1 * 1.2 - 7.5 * 0.12;
+  EXPECT_EQ(plain.martensite_start(0.8, 0.3), plain.martensite_start(0.8));
+  EXPECT_EQ(stabilised.martensite_start(0.8, 0.), plain.martensite_start(0.8));
+  const double shift = 35.11 / 6.94 * (std::sqrt(1. + 0.3 / 0.1) - 1.);
+  EXPECT_NEAR(stabilised.martensite_start(0.8, 0.3), ms - shift, 1e-12);
+  EXPECT_NEAR(shift, 5.06, 0.01);
+  EXPECT_NEAR(stabilised.martensite_fraction(0., 0.8, 20., 0., 0.3),
+              1. - std::exp(-0.011 * (ms - shift - 20.)),
+              1e-14);
+}

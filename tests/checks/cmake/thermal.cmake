@@ -17,11 +17,12 @@ ausroll_add_parallel_check(NAME gear_ausrolling_np2
 # pure martensite at 0.2 and 0.8 wt% C with the yield stress and hardening modulus as expressions
 # of C and T, compressed: the reaction against the uniaxial closed form (1e-8); case trip_heat:
 # an insulated block transforming under a constant stress heated by the TRIP dissipation and the
-# latent heat (1e-8 of the rise). About 4 s.
+# latent heat (1e-8 of the rise); case stabilisation: a pre-strained block cooled through the Ms
+# lowered by the mechanical stabilisation (KM fraction, 1e-8). About 5 s.
 file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/thermal_trip)
 add_test(NAME check/thermal_trip
   COMMAND ${Python3_EXECUTABLE} ${AUSROLL_CHECKS_DIR}/check_thermal.py $<TARGET_FILE:ausroll>
-          ${CMAKE_SOURCE_DIR} trip mixture carbon_yield trip_heat
+          ${CMAKE_SOURCE_DIR} trip mixture carbon_yield trip_heat stabilisation
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/thermal_trip)
 set_tests_properties(check/thermal_trip PROPERTIES LABELS check TIMEOUT 900)
 
