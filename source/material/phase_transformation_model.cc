@@ -75,6 +75,50 @@ namespace ausroll::material
                       "(default lower bainite, 4.64 - 1.43 C; upper bainite 4.64 - 2.21 C: the "
                       "dilatometric relations of the ASM Handbook vol. 4, after Lement 1959).");
     TransformationPlasticityParameters::declare_parameters(prm);
+    prm.declare_entry("TRIP heating",
+                      "false",
+                      Patterns::Bool(),
+                      "Count the TRIP dissipation sigma : Delta eps_tp = kappa |dev sigma|^2 of "
+                      "every step as plastic work: it heats the workpiece with Thermal/Taylor-"
+                      "Quinney coefficient, as the plastic work does (needs TRIP coefficient > 0). "
+                      "false: only the plastic flow heats.");
+    prm.declare_entry("Latent heat",
+                      "0",
+                      Patterns::Double(),
+                      "Heat released per unit mass of martensite formed, in the unit of "
+                      "Thermal/Specific heat times K (mm^2/s^2: 1 J/g = 1e9), the source rho L "
+                      "df_M/dt of the heat equation (doc/theory.md section 8 on values). 0: none.");
+    prm.declare_entry("Bainite latent heat",
+                      "0",
+                      Patterns::Double(),
+                      "Heat released per unit mass of bainite formed (mm^2/s^2, as Latent heat), "
+                      "the source rho L_B df_B/dt. 0: none.");
+    prm.declare_entry("Mechanical stabilisation",
+                      "false",
+                      Patterns::Bool(),
+                      "Prior plastic strain of the austenite lowers Ms (the ausforming effect): "
+                      "Ms(C, alpha) = Ms(C) - G_0 / S (sqrt(1 + alpha / eps_0) - 1), alpha the "
+                      "accumulated equivalent plastic strain at the start of the step (Chatterjee, "
+                      "Wang and Bhadeshia, Mater. Sci. Technol. 22, 2006, as the MUCG46 program "
+                      "computes it; doc/theory.md section 8).");
+    prm.declare_entry("Stabilisation energy",
+                      "35.11",
+                      Patterns::Double(),
+                      "G_0 = mu b sqrt(rho_0) V_m / (8 pi (1 - nu)) (J/mol) of Mechanical "
+                      "stabilisation; default MUCG46's mu = 80 GPa, b = 0.252 nm, nu = 0.27, "
+                      "rho_0 = 2e13 1/m^2, V_m = 55.8 g/mol / 7.81 g/cm^3.");
+    prm.declare_entry("Stabilisation strain",
+                      "0.1",
+                      Patterns::Double(),
+                      "eps_0 = rho_0 / (d rho / d eps) of Mechanical stabilisation (positive; "
+                      "default MUCG46's rho = 2e13 + 2e14 eps 1/m^2).");
+    prm.declare_entry("Driving force slope",
+                      "6.94",
+                      Patterns::Double(),
+                      "S = -d Delta G / dT near Ms (J/(mol K), positive) that turns the "
+                      "stabilisation energy into the shift of Ms; default the slope of the "
+                      "gamma-alpha free energy of iron in MUCG46 between 300 and 700 K (1.658 "
+                      "cal/(mol K)).");
     prm.leave_subsection();
   }
 
@@ -94,7 +138,34 @@ namespace ausroll::material
     bainite_finish = prm.get("Bainite finish times");
     bainite_volume_change = prm.get("Bainite volume change");
     mechanics.parse_parameters(prm, input_directory);
+    trip_heating = prm.get_bool("TRIP heating");
+    latent_heat = prm.get_double("Latent heat");
+    bainite_latent_heat = prm.get_double("Bainite latent heat");
+    mechanical_stabilisation = prm.get_bool("Mechanical stabilisation");
+    stabilisation_energy = prm.get_double("Stabilisation energy");
+    stabilisation_strain = prm.get_double("Stabilisation strain");
+    driving_force_slope = prm.get_double("Driving force slope");
     prm.leave_subsection();
+    require(latent_heat >= 0., "Phases/Latent heat", "must not be negative");
+    require(bainite_latent_heat >= 0., "Phases/Bainite latent heat", "must not be negative");
+    require(stabilisation_energy >= 0., "Phases/Stabilisation energy", "must not be negative");
+    require(stabilisation_strain > 0.,
+            "Phases/Stabilisation strain",
+            "must be positive (rho_0 / (d rho / d eps))");
+    require(driving_force_slope > 0.,
+            "Phases/Driving force slope",
+            "must be positive (the driving force grows with undercooling)");
+    require(enabled || !mechanical_stabilisation,
+            "Phases/Mechanical stabilisation",
+            "acts on the transformation: set Phases/Enabled = true");
+    require(!trip_heating || mechanics.trip_coefficient > 0.,
+            "Phases/TRIP heating",
+            "heats by the TRIP dissipation: set Phases/TRIP coefficient > 0 too");
+    require(enabled || (!trip_heating && latent_heat == 0. && bainite_latent_heat == 0.),
+            trip_heating       ? "Phases/TRIP heating"
+            : latent_heat > 0. ? "Phases/Latent heat"
+                               : "Phases/Bainite latent heat",
+            "heats by the transformation: set Phases/Enabled = true");
     require(enabled || !mechanics.active(),
             mechanics.trip_coefficient > 0.    ? "Phases/TRIP coefficient"
             : mechanics.martensite_yield_given ? "Phases/Martensite yield stress"
@@ -132,19 +203,32 @@ namespace ausroll::material
   {
     if (bainite.active())
       dv_bainite.emplace(prm.bainite_volume_change, "Phases/Bainite volume change");
+    if (prm.trip_heating && prm.mechanics.trip_coefficient > 0.)
+      trip_heat.emplace(prm.mechanics);
+    if (prm.mechanical_stabilisation)
+    {
+      stabilised = true;
+      stabilisation_shift = prm.stabilisation_energy / prm.driving_force_slope;
+      stabilisation_strain = prm.stabilisation_strain;
+    }
   }
 
-  double PhaseTransformationModel::martensite_start(const double C) const
+  double PhaseTransformationModel::martensite_start(const double C, const double alpha) const
   {
-    return ms.value(C);
+    if (!stabilised)
+      return ms.value(C);
+    return ms.value(C)
+           - stabilisation_shift
+                 * (std::sqrt(1. + std::max(alpha, 0.) / stabilisation_strain) - 1.);
   }
 
   double PhaseTransformationModel::martensite_fraction(const double f_old,
                                                        const double C,
                                                        const double T,
-                                                       const double bainite_fraction) const
+                                                       const double bainite_fraction,
+                                                       const double alpha) const
   {
-    const double Ms = martensite_start(C);
+    const double Ms = martensite_start(C, alpha);
     if (T >= Ms)
       return f_old;
     return std::max(f_old, (1. - bainite_fraction) * (1. - std::exp(-b * (Ms - T))));
@@ -178,7 +262,8 @@ namespace ausroll::material
                                           Tensor<4, 3>        *tangent) const
   {
     const double f_b = bainite_fraction(old.bainite, old.martensite, old.temperature, step_length);
-    const double f = martensite_fraction(old.martensite, old.carbon, old.temperature, f_b);
+    const double f = martensite_fraction(
+        old.martensite, old.carbon, old.temperature, f_b, old.equivalent_plastic_strain);
     const double theta = transformation_stretch(f, old.carbon, f_b);
     // the fractions at the end of the step first: the inner return map reads them (TRIP, mixture)
     state.martensite = f;
@@ -186,6 +271,18 @@ namespace ausroll::material
     state.carbon = old.carbon;
     inner->evaluate(remove_stretch(F, theta), old, state, P, tangent);
     scale_response(P, tangent, theta);
+    if (trip_heat)
+    {
+      // the TRIP dissipation of the step, kappa dev(sigma) : dev(sigma) per unit volume (per
+      // reference volume with J, as the plastic work of ThermalExpansionModel)
+      const double kappa = trip_heat->trip_compliance(PhaseStep::of(old, state));
+      if (kappa > 0.)
+      {
+        const SymmetricTensor<2, 3> s = deviator(state.stress);
+        const double                J = inner->is_small_strain() ? 1. : determinant(F);
+        state.plastic_work += J * kappa * (s * s);
+      }
+    }
   }
 
   void PhaseTransformationModel::rebase(MaterialState &state, const Tensor<2, 3> &F) const

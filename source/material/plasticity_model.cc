@@ -45,15 +45,20 @@ namespace ausroll::material
       }
     }
 
-    /** The linear mixture (1 - f_M - f_B) sigma_y,A + f_M sigma_y,M(T) + f_B sigma_y,B(T) at the
-        austenite's yield stress @p austenite. */
+    /** The linear mixture (1 - f_M - f_B) sigma_y,A + f_M (sigma_y,M(C, T) + H_M(C, T) alpha) +
+        f_B sigma_y,B(C, T) at the austenite's yield stress @p austenite and the accumulated
+        @p alpha. */
     double mixture_yield_stress(const TransformationPlasticity &transformation,
                                 const double                    austenite,
+                                const double                    alpha,
                                 const PhaseStep                &phases,
                                 const double                    temperature)
     {
-      return transformation.austenite_weight(phases) * austenite
-             + transformation.product_yield_stress(phases, temperature);
+      const double sigma = transformation.austenite_weight(phases) * austenite
+                           + transformation.product_yield_stress(phases, temperature);
+      if (!transformation.products_harden())
+        return sigma;
+      return sigma + transformation.product_hardening(phases, temperature) * alpha;
     }
   } // namespace
 
@@ -263,8 +268,11 @@ namespace ausroll::material
   {
     const SymmetricTensor<2, 3> eta = dealii::deviator(stress) - back_stress;
     return std::sqrt(1.5 * (eta * eta))
-           - mixture_yield_stress(
-               *transformation, hardening_at(temperature).yield_stress(alpha), phases, temperature);
+           - mixture_yield_stress(*transformation,
+                                  hardening_at(temperature).yield_stress(alpha),
+                                  alpha,
+                                  phases,
+                                  temperature);
   }
 
   SymmetricTensor<2, 3>
@@ -277,7 +285,7 @@ namespace ausroll::material
     const SymmetricTensor<2, 3> eta = dealii::deviator(stress) - back_stress;
     const double                q = std::sqrt(1.5 * (eta * eta));
     const double                sy = mixture_yield_stress(
-        *transformation, hardening_at(temperature).yield_stress(alpha), phases, temperature);
+        *transformation, hardening_at(temperature).yield_stress(alpha), alpha, phases, temperature);
     if (q <= sy)
       return stress;
     return stress - (1. - sy / q) * eta;
@@ -298,11 +306,24 @@ namespace ausroll::material
     const double                         H_k = hardening_depends_on_temperature
                                                    ? parameters.kinematic_hardening_modulus.value(temperature)
                                                    : kinematic_modulus;
-    // the mixture: sigma_y(alpha) = w sigma_y,A(alpha) + f_M sigma_y,M + f_B sigma_y,B
+    // the mixture: sigma_y(alpha) = w sigma_y,A(alpha) + f_M (sigma_y,M + H_M alpha) + f_B
+    // sigma_y,B (the products' hardening term is left out without H_M: the sums of the
+    // perfectly plastic products stay as they were)
     const double w = transformation->austenite_weight(phases);
     const double product = transformation->product_yield_stress(phases, temperature);
-    const auto   yield_stress = [&](const double a) { return w * law.yield_stress(a) + product; };
-    const auto   slope = [&](const double a) { return w * law.slope(a); };
+    const bool   harden = transformation->products_harden();
+    const double product_slope
+        = harden ? transformation->product_hardening(phases, temperature) : 0.;
+    const auto yield_stress = [&](const double a)
+    {
+      const double sigma = w * law.yield_stress(a) + product;
+      return harden ? sigma + product_slope * a : sigma;
+    };
+    const auto slope = [&](const double a)
+    {
+      const double h = w * law.slope(a);
+      return harden ? h + product_slope : h;
+    };
     // TRIP: Delta eps_tp = kappa dev(sigma), so dev(sigma) (1 + 2 mu kappa) = dev(sigma_trial)
     // - 2 mu Delta eps_p
     const double kappa = transformation->trip_compliance(phases);

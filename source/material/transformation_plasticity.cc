@@ -23,16 +23,27 @@ namespace ausroll::material
         "Martensite yield stress",
         "",
         dealii::Patterns::Anything(),
-        "Yield stress of martensite (MPa, perfectly plastic), a number or a table in temperature "
-        "as Material/Yield stress. Given, the yield stress is the linear mixture (1 - f_M - f_B) "
-        "sigma_y,A + f_M sigma_y,M + f_B sigma_y,B with sigma_y,A the hardening law of Material "
+        "Yield stress of martensite (MPa), a number or a table in temperature as Material/Yield "
+        "stress, or an expression of the carbon content C (wt%) and the temperature T, e.g. "
+        "'413 + 1720*sqrt(C)' (as-quenched martensite after Krauss, Mater. Sci. Eng. A 273-275, "
+        "1999; doc/theory.md section 8), evaluated at every material point's carbon content. "
+        "Given, the yield stress is the linear mixture (1 - f_M - f_B) sigma_y,A + f_M "
+        "(sigma_y,M + H_M alpha) + f_B sigma_y,B with sigma_y,A the hardening law of Material "
         "(the austenite). Empty: martensite yields as austenite (no mixture).");
+    prm.declare_entry(
+        "Martensite hardening modulus",
+        "",
+        dealii::Patterns::Anything(),
+        "Linear isotropic hardening modulus H_M of martensite (MPa) in the point's accumulated "
+        "equivalent plastic strain alpha: a number, a table in temperature or an expression of C "
+        "and T, not negative. Needs Martensite yield stress. Empty: perfectly plastic "
+        "martensite.");
     prm.declare_entry("Bainite yield stress",
                       "",
                       dealii::Patterns::Anything(),
-                      "Yield stress of bainite (MPa, perfectly plastic), a number or a table in "
-                      "temperature, in the mixture of Martensite yield stress. Empty: bainite "
-                      "yields as austenite.");
+                      "Yield stress of bainite (MPa, perfectly plastic), a number, a table in "
+                      "temperature or an expression of C and T, in the mixture of Martensite "
+                      "yield stress. Empty: bainite yields as austenite.");
   }
 
   void TransformationPlasticityParameters::parse_parameters(dealii::ParameterHandler &prm,
@@ -40,15 +51,16 @@ namespace ausroll::material
   {
     trip_coefficient = prm.get_double("TRIP coefficient");
     require(trip_coefficient >= 0., "Phases/TRIP coefficient", "must not be negative");
-    const auto table = [&](const std::string &name, bool &given)
-    {
-      const std::string text = prm.get(name);
-      given = text.find_first_not_of(" \t") != std::string::npos;
-      return given ? PropertyTable::parse(text, "Phases/" + name, directory, true)
-                   : PropertyTable();
-    };
-    martensite_yield_stress = table("Martensite yield stress", martensite_yield_given);
-    bainite_yield_stress = table("Bainite yield stress", bainite_yield_given);
+    const auto property = [&](const std::string &name, const bool positive)
+    { return PhaseProperty::parse(prm.get(name), "Phases/" + name, directory, positive); };
+    martensite_yield_stress = property("Martensite yield stress", true);
+    martensite_yield_given = martensite_yield_stress.given();
+    martensite_hardening_modulus = property("Martensite hardening modulus", false);
+    bainite_yield_stress = property("Bainite yield stress", true);
+    bainite_yield_given = bainite_yield_stress.given();
+    require(martensite_yield_given || !martensite_hardening_modulus.given(),
+            "Phases/Martensite hardening modulus",
+            "hardens the martensite of the mixture: set Phases/Martensite yield stress too");
   }
 
   TransformationPlasticity::TransformationPlasticity(
@@ -88,9 +100,19 @@ namespace ausroll::material
   {
     double sigma = 0.;
     if (parameters.martensite_yield_given)
-      sigma += phases.martensite * parameters.martensite_yield_stress.value(temperature);
+      sigma += phases.martensite
+               * parameters.martensite_yield_stress.value(phases.carbon, temperature);
     if (parameters.bainite_yield_given)
-      sigma += phases.bainite * parameters.bainite_yield_stress.value(temperature);
+      sigma += phases.bainite * parameters.bainite_yield_stress.value(phases.carbon, temperature);
     return sigma;
+  }
+
+  double TransformationPlasticity::product_hardening(const PhaseStep &phases,
+                                                     const double     temperature) const
+  {
+    if (!parameters.martensite_hardening_modulus.given())
+      return 0.;
+    return phases.martensite
+           * parameters.martensite_hardening_modulus.value(phases.carbon, temperature);
   }
 } // namespace ausroll::material

@@ -51,6 +51,11 @@ namespace ausroll::scene
     thermal.parse_parameters(prm, input_directory);
     coupling.parse_parameters(prm, thermal.enabled);
     phases.parse_parameters(prm, thermal.enabled, input_directory);
+    if (phases.enabled) // the heat equation's source of the transformation
+    {
+      thermal.latent_heat_martensite = phases.latent_heat;
+      thermal.latent_heat_bainite = phases.bainite_latent_heat;
+    }
     stages.parse_parameters(prm, loading, thermal);
     const std::string table_entry = material.first_temperature_dependent_entry();
     require(table_entry.empty() || thermal.enabled,

@@ -227,6 +227,9 @@ namespace ausroll::thermal
     std::vector<double>                  T_face(face_quadrature.size());
     const AffineConstraints<double>      no_constraints;
     const double                         beta = parameters.taylor_quinney;
+    const double                         L_M = parameters.latent_heat_martensite;
+    const double                         L_B = parameters.latent_heat_bainite;
+    const bool                           latent = L_M > 0. || L_B > 0.;
 
     if (matrix_wanted)
     {
@@ -285,9 +288,18 @@ namespace ausroll::thermal
             K[i][i] = k;
         const material::MaterialPoint &point = *material_points[q];
         // plastic heating of the step: the trial state is the converged one, not yet committed
-        const double source = beta * (point.trial.plastic_work - point.committed.plastic_work) / dt;
+        const double plastic
+            = beta * (point.trial.plastic_work - point.committed.plastic_work) / dt;
         if (matrix_wanted)
-          balance.plastic_heat += source * dV;
+          balance.plastic_heat += plastic * dV;
+        // latent heat of the phases formed in the step (Phases/Latent heat; not in heat_plastic)
+        const double source
+            = latent ? plastic
+                           + parameters.density.value(T0)
+                                 * (L_M * (point.trial.martensite - point.committed.martensite)
+                                    + L_B * (point.trial.bainite - point.committed.bainite))
+                                 / dt
+                     : plastic;
         for (unsigned int i = 0; i < n; ++i)
         {
           const double         phi_i = fe_values.shape_value(i, q);

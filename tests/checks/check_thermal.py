@@ -116,6 +116,50 @@ mixture      (ctest check/thermal_trip) the same block, K = 0, compressed in y (
              1e-8 of sigma_y,M A (the return map solves the yield condition to 1e-13, the history
              has 10 digits; Newton to 1e-12 of the force level: the default 1e-6 leaves 2e-7 in
              the reaction of the finite-strain models).
+carbon_yield (ctest check/thermal_trip) pure martensite at two carbon contents: the block at 20 C
+             from the start (faces held at 20 C, Koistinen-Marburger coefficient 10 1/K: f = 1
+             - exp(-10 (Ms - 20)) is 1 in double at the first step for C = 0.2 and 0.8), with
+             Phases/Martensite yield stress = 413 + 1720*sqrt(C) (Krauss' fit, doc/theory.md
+             section 8) and Martensite hardening modulus = 3000 + 2000*C + T, compressed in y
+             (top face -0.1 t mm, 10 steps, small strain). The transformation strain is
+             isotropic and stress-free, so the mechanical axial strain is eps_m = u_y/5 -
+             (theta_tr - 1), theta_tr = (1 + dV/V(C))^(1/3), and once yielded the uniaxial
+             closed form of linear hardening |sigma| = (sigma_y,M(C) + H_M |eps_m|) / (1 + H_M/E);
+             the reaction on y = 5 is A |sigma| in every plastic step, 1e-8 of sigma_y,M A (the
+             return map solves the yield condition to 1e-13, the history has 10 digits, Newton
+             to 1e-12 of the force level); the two carbon contents yield at their own
+             sigma_y,M (different by 47 %).
+trip_heat    (ctest check/thermal_trip) the TRIP dissipation and the latent heat in the heat
+             source: the 3D block insulated (no thermal conditions: adiabatic, the source is
+             homogeneous, so T is uniform) under a constant uniaxial traction sigma = 200 MPa on
+             x = 10 (below the yield stress), TRIP coefficient K = 1e-4 1/MPa, Phases/TRIP heating
+             = true, specific heat 4.6e6 (rho c = 0.0361 MPa/K: a rise of tens of K, so that the
+             history's 10 digits resolve 1e-8 of it). (a) bainite: held at 300 C (above Ms), TTT
+             rows 200 C: 15 / 300 s and 800 C: 15 / 300 s (the same times at every temperature:
+             the JMAK fraction f_B(t) does not depend on the temperature rise), Bainite latent
+             heat 1e8 mm^2/s^2 (0.1 J/g), 8 steps of 15 s: every step's TRIP strain is kappa dev
+             sigma with dev sigma fixed by the dead load, so the dissipation of a step is
+             K sigma^2 (phi(f_n) - phi(f_n-1)) exactly, and T(t_n) = 300 + (beta K sigma^2
+             phi(f_B(t_n)) + rho L_B f_B(t_n)) / (rho c); (b) martensite: started at 20 C below
+             Ms (Ms 110.9 C at 0.8 wt% C): KM's f = 1 - exp(-b (Ms - 20)) forms in the first step,
+             then the block is hotter and nothing more forms; Latent heat 1e8 mm^2/s^2: T = 20 +
+             (beta K sigma^2 phi(f) + rho L f) / (rho c) from the first step on. Both to 1e-8 of
+             the final rise (backward Euler of a homogeneous source is exact; the history's 10
+             digits of T ~ 300 C resolve 1e-7 K; the kinetics use the
+             committed temperature, which is not the rise's: JMAK is temperature-independent
+             here and KM's fraction is the first step's); (c) (a) with TRIP heating = false
+             and no latent heat: T stays 300 C (1e-6 K; the TRIP dissipation is not heat, as
+             before this option).
+stabilisation (ctest check/thermal_trip) the mechanical stabilisation of austenite: the 3D block at
+             250 C (above Ms) compressed by a traction growing to 300 MPa at t = 1 (linear
+             hardening H = 1000 from 240 MPa: alpha = 0.06 exactly, uniaxial), unloaded at t =
+             1.1, then cooled with all faces at 250 - 230 (t - 1) C to 20 C (specific heat 1, the
+             mechanics at T(t_n), Taylor-Quinney 0), with Phases/Mechanical stabilisation =
+             true, Stabilisation energy 500 J/mol (a larger shift than the default's, to see it),
+             eps_0 0.1, S 6.94: the fraction is KM's with the shifted Ms, 1 - exp(-b (Ms(C) -
+             G_0/S (sqrt(1 + alpha/eps_0) - 1) - T)), to 1e-8 (the fraction column has 10
+             digits); the same run without the option has the unshifted Ms (1e-8), and the
+             shift lowers the final fraction.
 resume       the conduction run interrupted after step 25 (checkpoints every 10 steps) and resumed
              gives the same history as the uninterrupted run, to the last digit.
 
@@ -592,6 +636,114 @@ def main():
                   f"worst deviation {worst:.2e} of sigma_y,M A")
             checks(f"mixture ({kinematics}): reaction = A ((1 - f) sigma_0 + f sigma_y,M(T)) (stretches) in every "
                    "plastic step to 1e-8", worst < 1e-8 and f_end > 0.5)
+
+    if "carbon_yield" in cases:
+        yield_m = "413 + 1720*sqrt(C)"
+        hardening_m = "3000 + 2000*C + T"
+        for carbon in (0.2, 0.8):
+            sigma_m = 413.0 + 1720.0 * math.sqrt(carbon)
+            h_m = 3000.0 + 2000.0 * carbon + 20.0
+            theta_tr = (1.0 + (4.64 - 0.53 * carbon) / 100.0) ** (1.0 / 3.0)
+            settings = [f"Thermal/Thermal expansion={ALPHA}", "Thermal/Initial temperature=20",
+                        "Thermal/Specific heat=1", "Phases/Enabled=true", f"Phases/Carbon content={carbon}",
+                        "Phases/Koistinen-Marburger coefficient=10", "Loading/Number of steps=10",
+                        "Material/Hardening modulus=0", "Thermal/Taylor-Quinney coefficient=0",
+                        "Boundary conditions/Condition 3/Value=-0.1*t",
+                        f"Phases/Martensite yield stress={yield_m}",
+                        f"Phases/Martensite hardening modulus={hardening_m}",
+                        "Solver/Residual tolerance=1e-12"] + faces_held_at("20")
+            directory = f"carbon_yield_{carbon:g}"
+            run(ausroll, block, settings, directory)
+            worst, plastic, fractions = 0.0, 0, []
+            for row in history(directory)[1:]:
+                eps_m = abs(float(row["corner_uy"]) / 5.0 - (theta_tr - 1.0))
+                fractions.append(float(row["martensite_min"]))
+                if E * eps_m <= sigma_m:
+                    continue
+                plastic += 1
+                expected = (sigma_m + h_m * eps_m) / (1.0 + h_m / E) * 40.0
+                worst = max(worst, abs(abs(float(row["reaction_3_y"])) - expected) / (sigma_m * 40.0))
+            print(f"carbon_yield (C = {carbon}): sigma_y,M {sigma_m:.4f} MPa, H_M {h_m:.1f} MPa, {plastic} plastic "
+                  f"steps, worst reaction deviation {worst:.2e} of sigma_y,M A, martensite {min(fractions):.17g}")
+            checks(f"carbon_yield (C = {carbon}): pure martensite from the first step", min(fractions) == 1.0)
+            checks(f"carbon_yield (C = {carbon}): reaction = A (sigma_y,M(C) + H_M |eps_m|) / (1 + H_M/E) to 1e-8",
+                   worst < 1e-8 and plastic >= 4)
+
+    if "trip_heat" in cases:
+        sigma, K, beta = 200.0, 1e-4, 0.9
+        rho, c, latent = 7.85e-9, 4.6e6, 1e8
+        rho_c = rho * c
+        n = math.log(math.log(0.01) / math.log(0.99)) / math.log(300.0 / 15.0)
+        k = -math.log(0.99) / 15.0 ** n
+
+        def phi(z):
+            return z * (1.0 - math.log(z)) if z > 0.0 else 0.0
+
+        base = ["Boundary conditions/Number of conditions=4", "Boundary conditions/Condition 3/Boundary id=1",
+                "Boundary conditions/Condition 3/Type=traction", f"Boundary conditions/Condition 3/Value={sigma}; 0; 0",
+                "Thermal/Thermal expansion=0", f"Thermal/Specific heat={c}", "Phases/Enabled=true",
+                f"Phases/Carbon content={CARBON}", f"Phases/TRIP coefficient={K}", "Solver/Absolute residual tolerance=1e-8"]
+        bainite = base + ["Thermal/Initial temperature=300", "Loading/End time=120", "Loading/Number of steps=8",
+                          "Phases/Bainite start times=200: 15, 800: 15", "Phases/Bainite finish times=200: 300, 800: 300"]
+        run(ausroll, block, bainite + ["Phases/TRIP heating=true", f"Phases/Bainite latent heat={latent}"],
+            "trip_heat_bainite")
+        worst_T, worst, rise = 0.0, 0.0, 0.0
+        for row in history("trip_heat_bainite")[1:]:
+            f_b = 1.0 - math.exp(-k * float(row["time"]) ** n)
+            rise = (beta * K * sigma ** 2 * phi(f_b) + rho * latent * f_b) / rho_c
+            worst_T = max(worst_T, abs(float(row["T_mean"]) - 300.0 - rise))
+            worst = max(worst, abs(float(row["bainite_mean"]) - f_b))
+        worst = max(worst, worst_T / rise)  # of the final (largest) rise: the column has 10 digits
+        print(f"trip_heat (bainite): final f_B {f_b:.6f}, rise {rise:.6f} K (TRIP {beta * K * sigma ** 2 * phi(f_b) / rho_c:.4f} "
+              f"K, latent {rho * latent * f_b / rho_c:.4f} K), worst relative deviation {worst:.2e}")
+        checks("trip_heat (bainite): T = T0 + (beta K sigma^2 phi(f_B) + rho L_B f_B) / (rho c) to 1e-8",
+               worst < 1e-8 and f_b > 0.4)
+
+        run(ausroll, block, base + ["Thermal/Initial temperature=20", "Loading/Number of steps=4",
+                                    "Phases/TRIP heating=true", f"Phases/Latent heat={latent}"], "trip_heat_martensite")
+        f_m = martensite(20.0)
+        rise = (beta * K * sigma ** 2 * phi(f_m) + rho * latent * f_m) / rho_c
+        worst = 0.0
+        for row in history("trip_heat_martensite")[1:]:
+            worst = max(worst, abs(float(row["T_mean"]) - 20.0 - rise) / rise, abs(float(row["martensite_mean"]) - f_m))
+        print(f"trip_heat (martensite): f_M {f_m:.6f}, rise {rise:.6f} K, worst relative deviation {worst:.2e}")
+        checks("trip_heat (martensite): T = T0 + (beta K sigma^2 phi(f_M) + rho L f_M) / (rho c) to 1e-8", worst < 1e-8)
+
+        run(ausroll, block, bainite, "trip_heat_off")
+        unchanged = all(abs(float(row["T_mean"]) - 300.0) < 1e-6 for row in history("trip_heat_off"))
+        print(f"trip_heat (off): T_mean stays 300 C: {unchanged}")
+        checks("trip_heat (off): without TRIP heating and latent heat the block stays at 300 C (1e-6 K)", unchanged)
+
+    if "stabilisation" in cases:
+        g0, eps0, slope, b = 500.0, 0.1, 6.94, 0.011
+        alpha = (300.0 - SIGMA0) / H
+        shift = g0 / slope * (math.sqrt(1.0 + alpha / eps0) - 1.0)
+        settings = ["Boundary conditions/Number of conditions=4", "Boundary conditions/Condition 3/Boundary id=3",
+                    "Boundary conditions/Condition 3/Type=traction",
+                    "Boundary conditions/Condition 3/Value=0; t < 1.05 ? -300 * min(t, 1) : 0; 0",
+                    f"Thermal/Thermal expansion={ALPHA}", "Thermal/Initial temperature=250", "Thermal/Specific heat=1",
+                    "Thermal/Taylor-Quinney coefficient=0", "Coupling/Iterations=3", "Phases/Enabled=true",
+                    f"Phases/Carbon content={CARBON}", "Loading/End time=2", "Loading/Number of steps=20",
+                    "Solver/Absolute residual tolerance=1e-8"] + faces_held_at("t <= 1 ? 250 : 250 - 230 * (t - 1)")
+        finals = {}
+        for on in (True, False):
+            directory = "stabilisation_" + ("on" if on else "off")
+            extra = ["Phases/Mechanical stabilisation=true", f"Phases/Stabilisation energy={g0}",
+                     f"Phases/Stabilisation strain={eps0}", f"Phases/Driving force slope={slope}"] if on else []
+            run(ausroll, block, settings + extra, directory)
+            ms = MS - (shift if on else 0.0)
+            worst, worst_alpha = 0.0, 0.0
+            for row in history(directory)[1:]:
+                t = float(row["time"])
+                T = 250.0 if t <= 1.0 + 1e-12 else 250.0 - 230.0 * (t - 1.0)
+                f = 1.0 - math.exp(-b * (ms - T)) if T < ms else 0.0
+                worst = max(worst, abs(float(row["martensite_mean"]) - f), abs(float(row["martensite_max"]) - f))
+                finals[on] = f
+            print(f"stabilisation ({'on' if on else 'off'}): alpha {alpha:.4f}, Ms {ms:.4f} C (shift "
+                  f"{MS - ms:.4f} K), final fraction {finals[on]:.6f}, worst deviation {worst:.2e}")
+            checks(f"stabilisation ({'on' if on else 'off'}): KM fraction with Ms - G_0/S (sqrt(1 + alpha/eps_0) - 1) "
+                   "to 1e-8", worst < 1e-8 and finals[on] > 0.5)
+        checks("stabilisation: the pre-strain lowers the final fraction", finals[True] < finals[False] - 0.01)
 
     slide = os.path.join(scenes, "block_slide.prm")
     thermal_on = ["Thermal/Enabled=true", "Thermal/Thermal expansion=0", "Thermal/Initial temperature=20",

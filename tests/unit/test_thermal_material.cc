@@ -463,6 +463,19 @@ namespace
     return beta;
   }
 
+  /** A deformation gradient that yields the steels of the tangent tests (3 % strain). */
+  Tensor<2, 3> plastic_gradient()
+  {
+    return identity()
+           + Tensor<2, 3>({{0.03, 0.01, 0.}, {0.005, -0.02, 0.002}, {0., 0.003, -0.008}});
+  }
+
+  /** A deformation gradient that stays elastic (3e-4 strain). */
+  Tensor<2, 3> elastic_gradient()
+  {
+    return identity() + 1e-4 * Tensor<2, 3>({{3., 1., 0.}, {0.5, -2., 0.2}, {0., 0.3, -0.8}});
+  }
+
   /** A deviatoric-plus-pressure stress (MPa). */
   dealii::SymmetricTensor<2, 3> some_stress(const double scale)
   {
@@ -563,11 +576,9 @@ TEST(TransformationPlasticity, TangentsMatchFiniteDifferences)
   // rotated back stress (H_k > 0: the back-stress sensitivity of the updated Lagrangian and
   // finite-strain models), and with TRIP alone.
   const ThermalExpansionParameters thermal = expansion(1.2e-5);
-  const Tensor<2, 3>               F_plastic
-      = identity() + Tensor<2, 3>({{0.03, 0.01, 0.}, {0.005, -0.02, 0.002}, {0., 0.003, -0.008}});
-  const Tensor<2, 3> F_elastic
-      = identity() + 1e-4 * Tensor<2, 3>({{3., 1., 0.}, {0.5, -2., 0.2}, {0., 0.3, -0.8}});
-  MaterialParameters kinematic = steel(1000.);
+  const Tensor<2, 3>               F_plastic = plastic_gradient();
+  const Tensor<2, 3>               F_elastic = elastic_gradient();
+  MaterialParameters               kinematic = steel(1000.);
   kinematic.kinematic_hardening_modulus = 5000.;
   for (const bool mixture : {true, false})
     for (const double f_old : {0., 0.2})
@@ -722,4 +733,174 @@ TEST(TransformationPlasticity, ElasticMaterialRelaxesByTrip)
     EXPECT_LT(ausroll::testing::tangent_error(*model, old, identity() + strain), 1e-6)
         << to_string(k);
   }
+}
+
+// ------------------------------------ the yield stress and hardening of martensite in C and T
+
+namespace
+{
+  /** The `Phases` mechanics of the entries @p yield and @p hardening (parsed, as the `.prm`). */
+  TransformationPlasticityParameters
+  carbon_mechanics(const std::string &yield, const std::string &hardening, const double K = 0.)
+  {
+    dealii::ParameterHandler prm;
+    prm.enter_subsection("Phases");
+    TransformationPlasticityParameters::declare_parameters(prm);
+    prm.set("TRIP coefficient", K);
+    prm.set("Martensite yield stress", yield);
+    prm.set("Martensite hardening modulus", hardening);
+    TransformationPlasticityParameters p;
+    p.parse_parameters(prm, "");
+    return p;
+  }
+
+  /** Krauss' fit and a hardening modulus in C and T (MPa). */
+  double krauss(const double C)
+  {
+    return 413. + 1720. * std::sqrt(C);
+  }
+  double martensite_modulus(const double C, const double T)
+  {
+    return 2000. + 1000. * C - 2. * T;
+  }
+} // namespace
+
+TEST(TransformationPlasticity, MartensiteYieldStressAndHardeningOfCarbon)
+{
+  // The entries as expressions of C and T are evaluated at the point's carbon content (PhaseStep
+  // carries it): the products' yield stress f_M sigma_y,M(C, T) and hardening f_M H_M(C, T) to
+  // round-off; a number or table (no C) gives the same at every C.
+  const TransformationPlasticity mixture(
+      carbon_mechanics("413 + 1720*sqrt(C)", "2000 + 1000*C - 2*T"));
+  ASSERT_TRUE(mixture.products_harden());
+  for (const double C : {0.2, 0.8})
+  {
+    const PhaseStep step{0.1, 0., 0.6, 0., C};
+    EXPECT_NEAR(mixture.product_yield_stress(step, 150.), 0.6 * krauss(C), 1e-12 * krauss(C));
+    EXPECT_NEAR(mixture.product_hardening(step, 150.),
+                0.6 * martensite_modulus(C, 150.),
+                1e-12 * martensite_modulus(C, 150.));
+    EXPECT_EQ(mixture.austenite_weight(step), 0.4);
+  }
+  const TransformationPlasticity table(carbon_mechanics("20: 1400, 300: 1100", ""));
+  EXPECT_FALSE(table.products_harden());
+  EXPECT_EQ(table.product_hardening(PhaseStep{0., 0., 1., 0., 0.8}, 20.), 0.);
+  EXPECT_EQ(table.product_yield_stress(PhaseStep{0., 0., 1., 0., 0.2}, 160.),
+            table.product_yield_stress(PhaseStep{0., 0., 1., 0., 0.8}, 160.));
+  EXPECT_NEAR(table.product_yield_stress(PhaseStep{0., 0., 1., 0., 0.2}, 160.), 1250., 1e-12);
+}
+
+TEST(TransformationPlasticity, HardeningMartensiteReturnMapSatisfiesItsEquations)
+{
+  // Pure martensite (f_M = 1 before and after: no TRIP) at C = 0.2 and 0.8: the radial return
+  // with sigma_y = sigma_y,M(C, T) + H_M(C, T) alpha: on yield sqrt(3/2) |dev sigma| = that at
+  // alpha_old + dgamma, and the uniaxial closed form dgamma = (q_trial - sigma_y(alpha_old)) /
+  // (3 mu + H_M), to 1e-9 relative.
+  const auto mixture
+      = carbon_mechanics("413 + 1720*sqrt(C)", "2000 + 1000*C - 2*T"); // keeps the tables alive
+  const auto   transforming = create_plasticity_model(steel(1000.), &mixture);
+  const double mu = 200000. / 2.6, T = 60., alpha_old = 0.01;
+  for (const double C : {0.2, 0.8})
+  {
+    const PhaseStep               step{1., 0., 1., 0., C};
+    dealii::SymmetricTensor<2, 3> trial;
+    trial[0][0] = 6000.; // uniaxial: q_trial = 6000
+    const ReturnMappingResult r = transforming->return_map(trial, {}, alpha_old, T, step);
+    ASSERT_TRUE(r.plastic);
+    const double H = martensite_modulus(C, T);
+    const double q_trial = 6000.;
+    const double dgamma = (q_trial - krauss(C) - H * alpha_old) / (3. * mu + H);
+    EXPECT_NEAR(r.eq_plastic_strain_increment, dgamma, 1e-9 * dgamma) << "C = " << C;
+    EXPECT_NEAR(std::sqrt(1.5) * dealii::deviator(r.stress).norm(),
+                krauss(C) + H * (alpha_old + dgamma),
+                1e-9 * krauss(C))
+        << "C = " << C;
+    EXPECT_NEAR(transforming->yield_function(
+                    r.stress, r.back_stress, alpha_old + r.eq_plastic_strain_increment, T, step),
+                0.,
+                1e-9 * krauss(C));
+  }
+}
+
+TEST(TransformationPlasticity, CarbonDependentTangentsMatchFiniteDifferences)
+{
+  // dP/dF with the martensite yield stress and hardening modulus as expressions of C and T,
+  // while martensite forms (f_M from 0.2 to about 0.45 at 60 C) with TRIP, at C = 0.2 and 0.8,
+  // around every kinematics: against central differences (1e-6 relative), plastic and elastic.
+  const ThermalExpansionParameters thermal = expansion(1.2e-5);
+  const Tensor<2, 3>               F_plastic = plastic_gradient();
+  const Tensor<2, 3>               F_elastic = elastic_gradient();
+  PhaseParameters                  p = phases();
+  p.mechanics = carbon_mechanics("413 + 1720*sqrt(C)", "2000 + 1000*C - 2*T", 2e-5);
+  for (const double C : {0.2, 0.8})
+    for (const KinematicsType k : all_kinematics)
+    {
+      const auto    model = create_constitutive_model(k, steel(1000.), false, &thermal, &p);
+      MaterialState old;
+      old.temperature = C < 0.5 ? 300. : 60.; // below Ms of either carbon content
+      old.carbon = C;
+      old.martensite = 0.2;
+      old.equivalent_plastic_strain = 0.01;
+      MaterialState state;
+      Tensor<2, 3>  P;
+      model->evaluate(F_plastic, old, state, P, nullptr);
+      EXPECT_GT(state.martensite, 0.35) << to_string(k);
+      EXPECT_GT(state.equivalent_plastic_strain, 0.01) << to_string(k);
+      const double e_plastic = ausroll::testing::tangent_error(*model, old, F_plastic);
+      const double e_elastic = ausroll::testing::tangent_error(*model, old, F_elastic);
+      std::printf("[ %-18s ] C %.1f: FD error plastic %.2e, elastic %.2e\n",
+                  to_string(k).c_str(),
+                  C,
+                  e_plastic,
+                  e_elastic);
+      EXPECT_LT(e_plastic, 1e-6) << to_string(k);
+      EXPECT_LT(e_elastic, 1e-6) << to_string(k);
+    }
+}
+
+TEST(TransformationPlasticity, BadCarbonExpressionsNameTheEntry)
+{
+  const auto message = [](const std::string &yield, const std::string &hardening)
+  {
+    try
+    {
+      carbon_mechanics(yield, hardening);
+    }
+    catch (const ausroll::InputError &e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("413 + 1720*sqrt(C)", "1000*C"), "no error");
+  EXPECT_NE(message("413 - 1720*C", "").find("Phases/Martensite yield stress: '413 - 1720*C' is"),
+            std::string::npos);
+  EXPECT_NE(message("413 + 1720*sqrt(X)", "").find("cannot parse"), std::string::npos);
+  EXPECT_NE(message("1400", "-1000*C").find("Phases/Martensite hardening modulus"),
+            std::string::npos);
+  EXPECT_NE(message("", "1000").find("Phases/Martensite hardening modulus: hardens the"),
+            std::string::npos);
+}
+
+TEST(PhaseTransformationModel, MechanicalStabilisationLowersMs)
+{
+  // Ms(C, alpha) = Ms(C) - G_0 / S (sqrt(1 + alpha / eps_0) - 1) with the option (defaults of
+  // MUCG46: G_0 = 35.11 J/mol, eps_0 = 0.1, S = 6.94 J/(mol K)), Ms(C) without it at any alpha;
+  // the KM fraction follows the shifted Ms.
+  const ThermalExpansionParameters thermal = expansion(0.);
+  PhaseParameters                  p = phases();
+  const PhaseTransformationModel   plain(
+      create_constitutive_model(KinematicsType::small_strain, steel(), false, &thermal), p);
+  p.mechanical_stabilisation = true;
+  const PhaseTransformationModel stabilised(
+      create_constitutive_model(KinematicsType::small_strain, steel(), false, &thermal), p);
+  const double ms = 539. - 423. * 0.8 - 30.4 * 0.55 - 17.7 * 3.25 - 12.1 * 1.2 - 7.5 * 0.12;
+  EXPECT_EQ(plain.martensite_start(0.8, 0.3), plain.martensite_start(0.8));
+  EXPECT_EQ(stabilised.martensite_start(0.8, 0.), plain.martensite_start(0.8));
+  const double shift = 35.11 / 6.94 * (std::sqrt(1. + 0.3 / 0.1) - 1.);
+  EXPECT_NEAR(stabilised.martensite_start(0.8, 0.3), ms - shift, 1e-12);
+  EXPECT_NEAR(shift, 5.06, 0.01);
+  EXPECT_NEAR(stabilised.martensite_fraction(0., 0.8, 20., 0., 0.3),
+              1. - std::exp(-0.011 * (ms - shift - 20.)),
+              1e-14);
 }

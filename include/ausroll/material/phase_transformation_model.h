@@ -39,9 +39,25 @@ namespace ausroll::material
     std::string bainite_finish;
     /** `Bainite volume change` austenite to bainite in per cent, expression of C. */
     std::string bainite_volume_change = "4.64 - 1.43*C";
-    /** `TRIP coefficient`, `Martensite yield stress`, `Bainite yield stress`: the mechanics of
-        the transformation in the return map (TransformationPlasticity). */
+    /** `TRIP coefficient`, `Martensite yield stress`, `Martensite hardening modulus`, `Bainite
+        yield stress`: the mechanics of the transformation in the return map
+        (TransformationPlasticity). */
     TransformationPlasticityParameters mechanics;
+    /** `TRIP heating`: the TRIP dissipation joins the plastic work that heats the workpiece. */
+    bool trip_heating = false;
+    /** `Latent heat` of martensite per unit mass (mm^2/s^2, the unit of Thermal/Specific heat
+        times K: 1 J/g = 1e9 mm^2/s^2), released as martensite forms (the thermal source). */
+    double latent_heat = 0.;
+    /** `Bainite latent heat` per unit mass (mm^2/s^2). */
+    double bainite_latent_heat = 0.;
+    /** `Mechanical stabilisation`: prior plastic strain of the austenite lowers Ms. */
+    bool mechanical_stabilisation = false;
+    /** `Stabilisation energy` G_0 (J/mol): mu b sqrt(rho_0) V_m / (8 pi (1 - nu)). */
+    double stabilisation_energy = 35.11;
+    /** `Stabilisation strain` eps_0 = rho_0 / (d rho / d eps). */
+    double stabilisation_strain = 0.1;
+    /** `Driving force slope` S = -d Delta G / dT near Ms (J/(mol K)). */
+    double driving_force_slope = 6.94;
     /** Folder of the `.prm` file (resolves `file:` tables). */
     std::string input_directory;
 
@@ -77,7 +93,18 @@ namespace ausroll::material
    * - the fractions of the step are written into the trial state before the inner model runs:
    *   its return map reads them (PhaseStep::of(old, state)) for TRIP and the mixture rule of the
    *   yield stress (`TRIP coefficient`, `Martensite yield stress`, TransformationPlasticity).
-   * Not yet: the mechanical stabilisation of austenite, the hardening memory of the austenite.
+   * - TRIP heating (`TRIP heating`, off by default): the TRIP dissipation of the step,
+   *   J kappa dev(sigma) : dev(sigma) per unit reference volume (Delta eps_tp = kappa dev sigma
+   *   with sigma the Cauchy stress at the end of the step; exact in small strain), is added to
+   *   state.plastic_work after the inner model (ThermalExpansionModel) has written the plastic
+   *   part, so the heat source beta (W_n+1 - W_n) / dt counts it with the Taylor-Quinney factor.
+   * - mechanical stabilisation (`Mechanical stabilisation`, off by default; Chatterjee, Wang
+   *   and Bhadeshia 2006 in the form of the MUCG46 program): the accumulated equivalent plastic
+   *   strain alpha of the state at the start of the step raises the driving force martensite
+   *   needs by the work of moving its interface through the forest of dislocations,
+   *   G(alpha) = G_0 (sqrt(1 + alpha / eps_0) - 1) (J/mol), which lowers Ms by G / S:
+   *   Ms(C, alpha) = Ms(C) - G_0 / S (sqrt(1 + alpha / eps_0) - 1).
+   * Not yet: the hardening memory of the austenite.
    */
   class PhaseTransformationModel : public WrappedModel
   {
@@ -100,15 +127,18 @@ namespace ausroll::material
       WrappedModel::set_step_length(dt);
     }
 
-    /** Ms at carbon content @p C (wt%). */
-    double martensite_start(const double C) const;
+    /** Ms at carbon content @p C (wt%) after the accumulated plastic strain @p alpha (the
+        mechanical stabilisation; without it Ms(C)). */
+    double martensite_start(const double C, const double alpha = 0.) const;
 
     /** Martensite fraction after a step at temperature @p T from fraction @p f_old, with the
-        bainite fraction @p bainite (not available to martensite). */
+        bainite fraction @p bainite (not available to martensite), after the accumulated
+        plastic strain @p alpha (the mechanical stabilisation's). */
     double martensite_fraction(const double f_old,
                                const double C,
                                const double T,
-                               const double bainite = 0.) const;
+                               const double bainite = 0.,
+                               const double alpha = 0.) const;
 
     /** Bainite fraction after a step of length @p dt at @p T from @p f_old, with the martensite
         fraction @p martensite of the step's start. */
@@ -124,6 +154,13 @@ namespace ausroll::material
     BainiteKinetics               bainite;          ///< TTT kinetics (may be inactive)
     std::optional<CarbonFunction> dv_bainite;       ///< dV/V(C) of bainite, per cent
     double                        step_length = 0.; ///< dt of the current step
+
+    /** TRIP of the TRIP heating (empty: the TRIP dissipation is not counted as heat). */
+    std::optional<TransformationPlasticity> trip_heat;
+
+    bool   stabilised = false;        ///< `Mechanical stabilisation`
+    double stabilisation_shift = 0.;  ///< G_0 / S (K)
+    double stabilisation_strain = 1.; ///< eps_0
 
     double         b;  ///< Koistinen-Marburger coefficient (1/K)
     CarbonFunction ms; ///< Ms(C)

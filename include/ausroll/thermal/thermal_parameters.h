@@ -54,6 +54,11 @@ namespace ausroll::thermal
     /** `Die temperatures`: expressions of t, one per die (or one for all). */
     std::vector<std::string> die_temperatures{"20"};
     double friction_heat_partition = 0.5; ///< `Friction heat partition` (into the workpiece)
+    /** Latent heat of martensite and bainite per unit mass (mm^2/s^2): not entries of `Thermal`
+        but `Phases/Latent heat` and `Phases/Bainite latent heat`, copied here by
+        SceneParameters (0 without phases): the source rho (L_M df_M + L_B df_B) / dt. */
+    double latent_heat_martensite = 0.;
+    double latent_heat_bainite = 0.; ///< see latent_heat_martensite
 
     static constexpr unsigned int max_conditions = 8; ///< declared `Condition 0..7`
 
