@@ -41,8 +41,9 @@ namespace ausroll::contact
         "Add to the tangent of a slipping node on a curved die the change of its equation as the "
         "die normal turns while the node slides (reaction over die radius). Newton then converges "
         "quadratically also when the contact forces are large (elastic punch: 58 instead of 90 "
-        "iterations, doc/scenes/hard_cases.md); false keeps the tangent of earlier versions, to "
-        "which the shipped scenes' regression outputs are pinned.");
+        "iterations, doc/scenes/hard_cases.md); 2D and 3D (from the die's curvature along its "
+        "tangent plane); false keeps the tangent of earlier versions, to which the shipped "
+        "scenes' regression outputs are pinned.");
     prm.declare_entry(
         "Penetrating boundaries",
         "add",

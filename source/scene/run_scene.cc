@@ -18,8 +18,6 @@ namespace ausroll::scene
       if (parameters.model.planar_model != mechanics::PlanarModel::plane_strain)
         throw InputError("Model/Planar model" + why
                          + "leave it at its default 'plane strain' (it is ignored in 3D)");
-      if (parameters.contact.curvature_tangent)
-        throw InputError("Contact/Curvature tangent" + why + "set it to false");
       if (!parameters.postprocess.boundary_profile.boundary_ids.empty())
         throw InputError("Postprocess/Boundary profile/Boundary ids" + why
                          + "leave it empty (no 3D profile yet)");

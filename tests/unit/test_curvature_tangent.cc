@@ -1,10 +1,9 @@
-// The curvature term of a slipping node's tangent on a curved die
+// The curvature term of a slipping node's tangent on a curved die, 2D (3D: at the end)
 // (contact/tangent/curvature_tangent.h) against the central difference of the condensed equation
 // E(u_b) = v(x) . T(x) r on a circle (r held fixed, so that the difference is the geometric part
 // alone). Reference: the exact derivative of the same formula; tolerance 1e-6 relative (difference
 // step 1e-5 mm, the truncation error is of order (step / radius)^2).
 #include <ausroll/contact/tangent/curvature_tangent.h>
-#include <ausroll/core/exceptions.h>
 
 #include <gtest/gtest.h>
 
@@ -120,8 +119,7 @@ TEST(CurvatureTangent, FlatDieAddsNothing)
 
 // The list of contact tangent terms (contact/tangent/contact_tangent_term.h) as the parameters
 // ask for it: the slip direction always (it says itself when it adds nothing), the curvature
-// only with `Contact/Curvature tangent = true`, and a clear InputError where the curvature term
-// does not exist (3D).
+// only with `Contact/Curvature tangent = true` (2D and 3D).
 TEST(ContactTangentTerms, ListFollowsParameters)
 {
   using namespace ausroll::contact;
@@ -138,5 +136,113 @@ TEST(ContactTangentTerms, ListFollowsParameters)
   parameters.curvature_tangent = true;
   EXPECT_EQ(names(create_tangent_terms<2>(parameters)),
             (std::vector<std::string>{"slip direction", "curvature"}));
-  EXPECT_THROW(create_tangent_terms<3>(parameters), ausroll::InputError);
+  EXPECT_EQ(names(create_tangent_terms<3>(parameters)),
+            (std::vector<std::string>{"slip direction", "curvature"}));
+}
+
+// 3D: the block of CurvatureTangent::node_term_3d() against central differences of the condensed
+// equations E_j(x) = v_j(x) . (T(x) r) of a slipping node on a cylinder with a tilted axis (the two
+// principal curvatures 1/R and 0 are not along the coordinate axes), moved along the constraint
+// x = x0 + v_j'(x0) h; r and the slip direction d in T = I + mu d (x) n held fixed (the change of
+// d is SlipDirectionTangent's). Reference: the same formula differentiated numerically; tolerance
+// 1e-6 relative (step 1e-5 mm, truncation error of order (step / R)^2).
+namespace
+{
+  struct CylinderNode
+  {
+    Point<3>     center{1., 2., -3.};
+    Tensor<1, 3> axis;
+    double       radius = 8.;
+    double       mu = 0.;
+    Tensor<1, 3> d; // slip direction at x0 (tangent)
+
+    Tensor<1, 3> normal(const Point<3> &x) const
+    {
+      Tensor<1, 3> n = (x - center) - ((x - center) * axis) * axis;
+      return n / n.norm();
+    }
+    Tensor<2, 3> transform(const Point<3> &x) const
+    {
+      Tensor<2, 3> T = mu * outer_product(d, normal(x));
+      for (unsigned int i = 0; i < 3; ++i)
+        T[i][i] += 1.;
+      return T;
+    }
+    static unsigned int largest(const Tensor<1, 3> &n)
+    {
+      unsigned int k = 0;
+      for (unsigned int c = 1; c < 3; ++c)
+        if (std::abs(n[c]) > std::abs(n[k]))
+          k = c;
+      return k;
+    }
+    static Tensor<1, 3> v(const Tensor<1, 3> &n, const unsigned int k, const unsigned int j)
+    {
+      Tensor<1, 3> w;
+      w[j] = 1.;
+      w[k] = -n[j] / n[k];
+      return w;
+    }
+  };
+
+  /** Largest difference between the analytic and the numerical block, relative to the largest
+      entry of the numerical one. */
+  double check_3d(CylinderNode &node, const Tensor<1, 3> &radial, const Tensor<1, 3> &r)
+  {
+    const Point<3>     x0 = node.center + node.radius * radial;
+    const Tensor<1, 3> n0 = node.normal(x0);
+    // tangents: along the axis (flat) and around it (curvature 1 / R), the exact dn/dt
+    std::array<Tensor<1, 3>, 2> t{{node.axis, cross_product_3d(n0, node.axis)}};
+    std::array<Tensor<1, 3>, 2> dn_dt{{Tensor<1, 3>(), t[1] / node.radius}};
+    node.d = (0.6 * t[0] + 0.8 * t[1]);
+    const unsigned int k = CylinderNode::largest(n0);
+    const Tensor<2, 3> T0 = node.transform(x0);
+    const Tensor<2, 3> term = CurvatureTangent<3>::node_term_3d(n0, dn_dt, t, k, r, T0);
+    const double       h = 1e-5;
+    double             largest = 0., error = 0.;
+    for (unsigned int jj = 0; jj < 3; ++jj)
+      if (jj != k)
+      {
+        const Tensor<1, 3> dx = CylinderNode::v(n0, k, jj);
+        for (unsigned int j = 0; j < 3; ++j)
+          if (j != k)
+          {
+            const auto E = [&](const Point<3> &x)
+            { return CylinderNode::v(node.normal(x), k, j) * (node.transform(x) * r); };
+            // the frozen part (what the assembled tangent holds) is constant in x: subtract
+            // nothing, the full derivative of E at fixed r is the curvature term
+            const double fd = (E(x0 + h * dx) - E(x0 - h * dx)) / (2. * h);
+            largest = std::max(largest, std::abs(fd));
+            error = std::max(error, std::abs(fd - term[j][jj]));
+          }
+      }
+    EXPECT_GT(largest, 1e-3); // the term is not trivially zero here
+    return error / largest;
+  }
+
+  CylinderNode tilted_cylinder(const double mu)
+  {
+    CylinderNode node;
+    node.axis = Tensor<1, 3>{{0.3, -0.5, 0.8}};
+    node.axis /= node.axis.norm();
+    node.mu = mu;
+    return node;
+  }
+} // namespace
+
+TEST(CurvatureTangent3d, FrictionlessNodeOnTiltedCylinder)
+{
+  CylinderNode       node = tilted_cylinder(0.);
+  const Tensor<1, 3> axis = node.axis;
+  Tensor<1, 3>       radial = cross_product_3d(axis, Tensor<1, 3>{{0., 0., 1.}});
+  radial /= radial.norm();
+  EXPECT_LT(check_3d(node, radial, Tensor<1, 3>{{40., -25., 70.}}), 1e-6);
+}
+
+TEST(CurvatureTangent3d, CoulombNodeOnTiltedCylinder)
+{
+  CylinderNode node = tilted_cylinder(0.3);
+  Tensor<1, 3> radial = cross_product_3d(node.axis, Tensor<1, 3>{{1., 0., 0.}});
+  radial /= radial.norm();
+  EXPECT_LT(check_3d(node, radial, Tensor<1, 3>{{-30., 55., 20.}}), 1e-6);
 }

@@ -1,7 +1,7 @@
 #include <ausroll/contact/contact_operator.h>
 #include <ausroll/contact/tangent/curvature_tangent.h>
-#include <ausroll/core/exceptions.h>
 
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe.h>
 
@@ -14,13 +14,29 @@ namespace ausroll::contact
 {
   using namespace dealii;
 
-  template <int dim>
-  CurvatureTangent<dim>::CurvatureTangent()
+  namespace
   {
-    if constexpr (dim != 2)
-      throw InputError("Contact/Curvature tangent is planar (2D only); with a three-dimensional "
-                       "Geometry/Type set it to false");
-  }
+    /** The die nearest to @p x (smallest |gap| among the valid projections) and its projection
+        @p p; -1 if no die is in range. */
+    template <int dim>
+    int nearest_die(const ContactOperator<dim> &contact,
+                    const Point<dim>           &x,
+                    const double                time,
+                    DieProjection<dim>         &p)
+    {
+      int die = -1;
+      for (unsigned int k = 0; k < contact.n_dies(); ++k)
+      {
+        const DieProjection<dim> q = contact.die(k).project(x, time);
+        if (q.valid && (die < 0 || std::abs(q.gap) < std::abs(p.gap)))
+        {
+          die = k;
+          p = q;
+        }
+      }
+      return die;
+    }
+  } // namespace
 
   template <int dim>
   void CurvatureTangent<dim>::setup(const Mapping<dim> &mapping, const DoFHandler<dim> &dof_handler)
@@ -73,8 +89,8 @@ namespace ausroll::contact
                                              TrilinosWrappers::SparseMatrix &matrix,
                                              TrilinosWrappers::MPI::Vector & /*rhs*/) const
   {
-    if constexpr (dim != 2)
-      return 0; // the constructor refused it
+    if constexpr (dim == 3)
+      return add_to_3d(input, matrix);
     else
     {
       const ContactOperator<dim>      &contact = input.contact;
@@ -106,17 +122,8 @@ namespace ausroll::contact
           r[d] = residual[node_dofs[d]];
         }
         // the die the node lies on: the nearest one
-        int              die = -1;
         DieProjection<2> p;
-        for (unsigned int k = 0; k < contact.n_dies(); ++k)
-        {
-          const DieProjection<2> q = contact.die(k).project(x, time);
-          if (q.valid && (die < 0 || std::abs(q.gap) < std::abs(p.gap)))
-          {
-            die = k;
-            p = q;
-          }
-        }
+        const int        die = nearest_die(contact, x, time, p);
         if (die < 0)
           continue;
         // dn/ds by central differences; skipped where the normal jumps (a kink of a polyline die)
@@ -148,6 +155,124 @@ namespace ausroll::contact
       matrix.compress(VectorOperation::add);
       return n_terms;
     }
+  }
+
+  template <int dim>
+  Tensor<2, 3> CurvatureTangent<dim>::node_term_3d(const Tensor<1, 3>                &normal,
+                                                   const std::array<Tensor<1, 3>, 2> &dn_dt,
+                                                   const std::array<Tensor<1, 3>, 2> &tangents,
+                                                   const unsigned int                 k,
+                                                   const Tensor<1, 3>                &r,
+                                                   const Tensor<2, 3>                &T)
+  {
+    // v_j = e_j + c_j e_k for the free components j (v_k unused)
+    std::array<Tensor<1, 3>, 3> v;
+    for (unsigned int j = 0; j < 3; ++j)
+      if (j != k)
+      {
+        v[j][j] = 1.;
+        v[j][k] = -normal[j] / normal[k];
+      }
+    const Tensor<1, 3> Tr = T * r;
+    Tensor<2, 3>       T_minus_I = T;
+    for (unsigned int i = 0; i < 3; ++i)
+      T_minus_I[i][i] -= 1.;
+    const Tensor<1, 3> w = T_minus_I * normal;
+    Tensor<2, 3>       term;
+    for (unsigned int jj = 0; jj < 3; ++jj)
+      if (jj != k)
+      {
+        // motion along the constraint: dx = v_j' du_j'
+        const Tensor<1, 3> dn = dn_dt[0] * (tangents[0] * v[jj]) + dn_dt[1] * (tangents[1] * v[jj]);
+        for (unsigned int j = 0; j < 3; ++j)
+          if (j != k)
+          {
+            const double dc = -(dn[j] * normal[k] - normal[j] * dn[k]) / (normal[k] * normal[k]);
+            term[j][jj] = dc * Tr[k] + (v[j] * w) * (dn * r);
+          }
+      }
+    return term;
+  }
+
+  template <int dim>
+  unsigned int CurvatureTangent<dim>::add_to_3d(const ContactTangentInput<dim> &input,
+                                                TrilinosWrappers::SparseMatrix &matrix) const
+  {
+    unsigned int n_terms = 0;
+    if constexpr (dim == 3)
+    {
+      const ContactOperator<dim> &contact = input.contact;
+      for (const auto &line : input.constraints.get_lines())
+      {
+        // a 3D slip line: u_k = c_i u_i + c_j u_j + gap term, i, j, k the components of one node
+        if (line.entries.size() != 2 || !owned.is_element(line.index))
+          continue;
+        const auto ik = dofs.find(line.index);
+        if (ik == dofs.end())
+          continue;
+        const unsigned int                     k = ik->second.component;
+        std::array<types::global_dof_index, 3> node_dofs;
+        node_dofs[k] = line.index;
+        bool one_node = true;
+        for (const auto &entry : line.entries)
+        {
+          const auto it = dofs.find(entry.first);
+          one_node = one_node && it != dofs.end() && it->second.component != k
+                     && it->second.support_point.distance(ik->second.support_point) <= 1e-12;
+          if (one_node)
+            node_dofs[it->second.component] = entry.first;
+        }
+        if (!one_node || line.entries[0].first == line.entries[1].first)
+          continue;
+        Point<3>     x;
+        Tensor<1, 3> r;
+        for (unsigned int d = 0; d < 3; ++d)
+        {
+          x[d] = ik->second.support_point[d] + input.u[node_dofs[d]];
+          r[d] = input.residual[node_dofs[d]];
+        }
+        // the die the node lies on: the nearest one
+        DieProjection<3> p;
+        const int        die = nearest_die(contact, x, input.time, p);
+        if (die < 0)
+          continue;
+        // dn/dt_a by central differences; skipped where the normal jumps (an edge of the die)
+        const double                h = 1e-6 * std::max(1., x.norm());
+        std::array<Tensor<1, 3>, 2> dn_dt;
+        bool                        smooth = true, curved = false;
+        for (unsigned int a = 0; a < 2 && smooth; ++a)
+        {
+          const DieProjection<3> plus = contact.die(die).project(x + h * p.tangents[a], input.time);
+          const DieProjection<3> minus
+              = contact.die(die).project(x - h * p.tangents[a], input.time);
+          if (!plus.valid || !minus.valid)
+          {
+            smooth = false;
+            break;
+          }
+          const Tensor<1, 3> forward = (plus.normal - p.normal) / h;
+          const Tensor<1, 3> backward = (p.normal - minus.normal) / h;
+          dn_dt[a] = 0.5 * (forward + backward);
+          smooth = (forward - backward).norm() <= 0.1 * dn_dt[a].norm() + 1e-12;
+          curved = curved || dn_dt[a].norm() >= 1e-12;
+        }
+        if (!smooth || !curved)
+          continue;
+        Tensor<2, 3> T = unit_symmetric_tensor<3>();
+        const auto  &transforms = contact.row_transforms();
+        const auto   it = transforms.find(node_dofs[0]);
+        if (it != transforms.end())
+          T = it->second.matrix;
+        const Tensor<2, 3> term = node_term_3d(p.normal, dn_dt, p.tangents, k, r, T);
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            if (i != k && j != k && term[i][j] != 0.)
+              matrix.add(node_dofs[i], node_dofs[j], term[i][j]);
+        ++n_terms;
+      }
+    }
+    matrix.compress(VectorOperation::add);
+    return n_terms;
   }
 
   template class CurvatureTangent<2>;

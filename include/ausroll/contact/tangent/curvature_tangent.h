@@ -11,6 +11,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <array>
 #include <unordered_map>
 
 namespace ausroll::contact
@@ -41,14 +42,20 @@ namespace ausroll::contact
    * transforms and its dies; a node is taken as slipping when its two DoFs are tied by one
    * constraint line (stick lines, Dirichlet lines and hanging-node lines look different).
    *
-   * 3D: not there yet (the constructor throws InputError naming the entry).
+   * 3D (node_term_3d()): the slip line u_k = sum_j c_j u_j + b (c_j = -n_j / n_k, k the
+   * component with the largest normal entry) leaves the equations E_j = v_j . (T r) of the two
+   * free components j, v_j = e_j + c_j e_k, and the same derivation gives the 2 x 2 block
+   *
+   *   dE_j/du_j' = (dc_j/du_j') (T r)_k + (v_j . w) (dn/du_j' . r),   dn/du_j' = W v_j',
+   *
+   * W = dn/dx the die's curvature along its tangent plane (taken from projections a small
+   * distance apart along each tangent), the change of the slip direction d inside T left to
+   * SlipDirectionTangent (in 2D it vanishes).
    */
   template <int dim>
   class CurvatureTangent : public ContactTangentTerm<dim>
   {
   public:
-    CurvatureTangent();
-
     std::string name() const override { return "curvature"; }
 
     /** Component and support point of each locally relevant DoF of @p dof_handler. */
@@ -79,7 +86,24 @@ namespace ausroll::contact
                             const unsigned int          a,
                             const unsigned int          b);
 
+    /**
+     * 3D: the term for one node, exposed for the unit test: normal @p normal, its derivatives
+     * @p dn_dt along the unit tangents @p tangents, the node's residual @p r and friction row
+     * transform @p T, the constrained component @p k. Returns the block dE_j/du_j' minus the
+     * frozen part in rows j and columns j' (the free components; row and column k are zero).
+     */
+    static dealii::Tensor<2, 3> node_term_3d(const dealii::Tensor<1, 3>                &normal,
+                                             const std::array<dealii::Tensor<1, 3>, 2> &dn_dt,
+                                             const std::array<dealii::Tensor<1, 3>, 2> &tangents,
+                                             const unsigned int                         k,
+                                             const dealii::Tensor<1, 3>                &r,
+                                             const dealii::Tensor<2, 3>                &T);
+
   private:
+    /** 3D: add_to() for the slip lines with two entries. */
+    unsigned int add_to_3d(const ContactTangentInput<dim>         &input,
+                           dealii::TrilinosWrappers::SparseMatrix &matrix) const;
+
     struct DofInfo
     {
       unsigned int       component = 0;
