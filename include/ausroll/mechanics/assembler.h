@@ -134,7 +134,8 @@ namespace ausroll::mechanics
    * stretch r / R in axisymmetric models (the deformed area element is 2 pi r dl). Its derivative
    * (the load stiffness, non-symmetric) enters the tangent, so Newton stays quadratic. Plane
    * stress: the change of thickness is not included (force per deformed length and reference
-   * thickness; the thickness stretch lives at the material points, not on the faces). 3D models
+   * thickness; the thickness stretch lives at the material points, not on the faces);
+   * generalized plane strain: times the global lambda (and dr/dlambda into the border). 3D models
    * (dim = 3): dead tractions only, a non-zero follower pressure throws (not implemented yet).
    *
    * Volumetric locking (`Model/Volumetric locking treatment = F-bar`, de Souza Neto, Peric,

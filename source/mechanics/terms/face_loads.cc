@@ -113,8 +113,10 @@ namespace ausroll::mechanics
                                               scratch.u_face[q],
                                               dA,
                                               inputs.need_matrix,
+                                              kinematics.out_of_plane_stretch(),
                                               t,
-                                              local.cell_matrix);
+                                              local.cell_matrix,
+                                              local.column);
               for (unsigned int i = 0; i < n_dofs; ++i)
                 cell_external(i) += t[component[i]]
                                     * fe_face_values.shape_value_component(i, q, component[i]) * dA;
