@@ -37,6 +37,7 @@ namespace ausroll::material
         data.push_back(deformation_gradient[i][j]);
     data.push_back(equivalent_plastic_strain);
     data.push_back(temperature);
+    data.push_back(evaluation_temperature);
     data.push_back(plastic_work);
     data.push_back(martensite);
     data.push_back(carbon);
@@ -54,6 +55,7 @@ namespace ausroll::material
         deformation_gradient[i][j] = *data++;
     equivalent_plastic_strain = *data++;
     temperature = *data++;
+    evaluation_temperature = *data++;
     plastic_work = *data++;
     martensite = *data++;
     carbon = *data++;

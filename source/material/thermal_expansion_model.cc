@@ -30,6 +30,7 @@ namespace ausroll::material
     inner->evaluate(remove_stretch(F, theta), old, state, P, tangent);
     scale_response(P, tangent, theta);
     state.temperature = old.temperature;
+    state.evaluation_temperature = old.temperature;
     const double d_alpha = state.equivalent_plastic_strain - old.equivalent_plastic_strain;
     const double J = inner->is_small_strain() ? 1. : determinant(F);
     state.plastic_work
@@ -40,6 +41,10 @@ namespace ausroll::material
 
   void ThermalExpansionModel::rebase(MaterialState &state, const Tensor<2, 3> &F) const
   {
-    inner->rebase(state, remove_stretch(F, thermal_stretch(state.temperature)));
+    // the stored state excludes the thermal stretch of the temperature it was evaluated at; the
+    // thermal field has since written the step's new temperature into state.temperature, whose
+    // stretch the next evaluation applies (using it here lost one step of thermal strain at
+    // every adaptation while the temperature changed)
+    inner->rebase(state, remove_stretch(F, thermal_stretch(state.evaluation_temperature)));
   }
 } // namespace ausroll::material

@@ -536,7 +536,15 @@ namespace ausroll::thermal
         {
           material_points[q]->trial.temperature = T[q];
           if (committed_too)
+          {
+            // the initial state F = I excludes no thermal stretch: that of the reference
+            // (stress-free) temperature
             material_points[q]->committed.temperature = T[q];
+            material_points[q]->committed.evaluation_temperature
+                = parameters.expansion.reference_temperature;
+            material_points[q]->trial.evaluation_temperature
+                = parameters.expansion.reference_temperature;
+          }
         }
       }
   }

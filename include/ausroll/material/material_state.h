@@ -33,6 +33,11 @@ namespace ausroll::material
    * - @ref temperature: the temperature the state was evaluated at (thermal scenes: the
    *   temperature field at this point at the start of the step, written by the thermal field;
    *   isothermal scenes leave it at 0 and no model reads it).
+   * - @ref evaluation_temperature: the temperature of the last mechanical evaluation, i.e. the
+   *   one whose thermal stretch the stored deformation gradient excludes (ThermalExpansionModel).
+   *   The thermal field overwrites @ref temperature after the mechanical solve of a step, so
+   *   the two differ by the step's temperature change until the next evaluation; a re-basing
+   *   after mesh adaptation must use this one, or the step's thermal strain is lost.
    * - @ref plastic_work: accumulated plastic work per unit reference volume, int tau_vm d alpha
    *   (N mm / mm^3 = MPa; thermal scenes only: ThermalExpansionModel; the source of plastic
    *   heating).
@@ -48,17 +53,18 @@ namespace ausroll::material
     dealii::SymmetricTensor<2, 3> elastic_left_cauchy_green;      ///< b_e (finite strain model)
     dealii::Tensor<2, 3>          deformation_gradient;           ///< F at this state
     double                        equivalent_plastic_strain = 0.; ///< alpha
-    double                        temperature = 0.;  ///< temperature of the state (thermal)
-    double                        plastic_work = 0.; ///< int tau_vm d alpha (thermal)
-    double                        martensite = 0.;   ///< martensite volume fraction (phases)
-    double                        carbon = 0.;       ///< carbon content, wt% (phases)
-    double                        bainite = 0.;      ///< bainite volume fraction (phases)
+    double                        temperature = 0.; ///< temperature of the state (thermal)
+    double evaluation_temperature = 0.; ///< temperature of the last evaluation (thermal)
+    double plastic_work = 0.;           ///< int tau_vm d alpha (thermal)
+    double martensite = 0.;             ///< martensite volume fraction (phases)
+    double carbon = 0.;                 ///< carbon content, wt% (phases)
+    double bainite = 0.;                ///< bainite volume fraction (phases)
 
     /** The undeformed, stress-free state: F = b_e = I, everything else zero. */
     MaterialState();
 
     /** Number of doubles written by pack(). */
-    static constexpr unsigned int n_packed_values = 6 * 4 + 9 + 6;
+    static constexpr unsigned int n_packed_values = 6 * 4 + 9 + 7;
 
     /** Append the state to @p data as n_packed_values doubles (mesh transfer, checkpoints). */
     void pack(std::vector<double> &data) const;
