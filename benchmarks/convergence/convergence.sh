@@ -5,6 +5,11 @@
 #  gear_rolling (prm/gear_rolling.prm, the resolved trailing scene): residual d_n along the flank (max-norm on the
 #    common radius grid), peak die force, die force at t = 0.6, peak contact pressure, plastic-zone
 #    depth (eps_p > 0.2 %).
+#  gear_rolling_bulk (prm/gear_rolling.prm, the whole mesh refined: Global refinements = Minimum level
+#    = level, Maximum level = level + 3, so that the bulk below the contact band, where the lower
+#    part of the rolled layer lies, is refined too; level 2 is the shipped scene): the ISO 1328
+#    profile quantities F_alpha, f_f_alpha, f_H_alpha, d_n, and the residual stress profiles of
+#    the depth probes at the pitch point and in the root of the rolled flank.
 #  disk_rolling (prm/disk_rolling_quick.prm): the 15 degree ring refined to 15 / 2^level degrees
 #    in the 12 mm band, radially likewise; steps = rolling steps per revolution (Coulomb mu = 0.3); mean
 #    die force over 60-300 degrees of revolution, residual lobe (max) and trough (min) of the rim,
@@ -15,6 +20,8 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 SCENE="${1:-}"
+LEVEL_SETS=(--level-set "Adaptivity/Maximum level = {level}"
+  --level-set "Adaptivity/Initial refinement cycles = {level}")
 case "$SCENE" in
   gear_rolling)
     PRM=prm/gear_rolling.prm
@@ -27,6 +34,25 @@ case "$SCENE" in
       --value "d_n_min=d_n_min" --value "p_n_max=p_n_max" --value "plastic_depth=plastic_depth"
       --profile "d_n=residual_dn.csv:R:d_n")
     PLOT=gear_work_precision.png ;;
+  gear_rolling_bulk)
+    PRM=prm/gear_rolling.prm
+    DEFAULTS=("1 2 3" "120 240 480" 2)
+    LEVEL_SETS=(--level-set "Geometry/Global refinements = {level}"
+      --level-set "Adaptivity/Minimum level = {level}"
+      --level-set "Adaptivity/Maximum level = {level + 3}")
+    SCENE_OPTIONS=(
+      --set "Output/Write VTU = true"
+      --history "F_peak=max:hypot(die_die_force_x, die_die_force_y)"
+      --after "/usr/bin/python3 $ROOT/benchmarks/gear_rolling/gear_quantities.py {out}"
+      --value "d_n_min=d_n_min" --value "F_alpha=F_alpha" --value "f_f_alpha=f_f_alpha"
+      --value "f_H_alpha=f_H_alpha" --value "plastic_depth=plastic_depth"
+      --profile "d_n=residual_dn.csv:R:d_n"
+      --profile "s_tt_pitch=depth_pitch_right_*.csv:s:stress_tt"
+      --profile "s_tt_pitch_0.2=depth_pitch_right_*.csv:s:stress_tt:at(0.2)"
+      --profile "s_tt_pitch_min=depth_pitch_right_*.csv:s:stress_tt:min"
+      --profile "s_zz_pitch_0.2=depth_pitch_right_*.csv:s:stress_zz:at(0.2)"
+      --profile "s_tt_root=depth_root_right_*.csv:s:stress_tt")
+    PLOT=gear_bulk_work_precision.png ;;
   gear_ausrolling)
     # the hot scene: t in seconds (14 deg of rolling in 0.1 s), so F_0.06 is at the angle of the
     # flagship's F_0.6; the coolest and hottest temperatures of the run besides the mechanics
@@ -55,7 +81,7 @@ case "$SCENE" in
       --profile "rim=profile_*.csv:angle:radial_displacement")
     PLOT=disk_work_precision.png ;;
   *)
-    echo "usage: $0 gear_rolling|gear_ausrolling|disk_rolling [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [options]" >&2
+    echo "usage: $0 gear_rolling|gear_rolling_bulk|gear_ausrolling|disk_rolling [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [options]" >&2
     exit 1 ;;
 esac
 shift
@@ -68,8 +94,7 @@ shift $(( $# < 5 ? $# : 5 ))
 # shellcheck disable=SC2086
 exec /usr/bin/python3 "$ROOT/scripts/convergence_study.py" "$ROOT/$PRM" \
   --ausroll "$AUSROLL" --work "$WORK" \
-  --levels $LEVELS --level-set "Adaptivity/Maximum level = {level}" \
-  --level-set "Adaptivity/Initial refinement cycles = {level}" \
+  --levels $LEVELS "${LEVEL_SETS[@]}" \
   --steps $STEPS --step-level "$STEP_LEVEL" \
   "${SCENE_OPTIONS[@]}" \
   --plot "$WORK/$PLOT" "$@"
