@@ -109,6 +109,16 @@ namespace ausroll::test_support
   }
 
   /**
+   * The surface loads of the tangent tests: a follower pressure 30 + 5 x on the top (boundary 3)
+   * and a dead traction (4, -3 y) on the right (boundary 1).
+   */
+  inline std::vector<mechanics::BoundaryCondition> tangent_test_loads()
+  {
+    return {surface_load(3, mechanics::BoundaryConditionType::pressure, "30 + 5 * x"),
+            surface_load(1, mechanics::BoundaryConditionType::traction, "4; -3 * y")};
+  }
+
+  /**
    * Finite-strain plastic steel-like block under a follower pressure (the threads test and the
    * assembly benchmark): Q2 with MappingQ2 and 3 x 3 Gauss points, F-bar, plane strain, yield
    * stress 240, hardening 1000, pressure @p pressure on the top (boundary 3).

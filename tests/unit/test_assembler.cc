@@ -44,9 +44,7 @@ namespace
   {
     test_support::AssemblerTestOptions options = test_support::tangent_test_options(
         c.kinematics, c.degree, c.plastic, c.planar, c.locking);
-    options.conditions
-        = {test_support::surface_load(3, mechanics::BoundaryConditionType::pressure, "30 + 5 * x"),
-           test_support::surface_load(1, mechanics::BoundaryConditionType::traction, "4; -3 * y")};
+    options.conditions = test_support::tangent_test_loads();
     test_support::AssemblerTestProblem<2> problem(options, test_support::distorted_block());
     const unsigned int                    n = problem.n_dofs();
     TrilinosWrappers::MPI::Vector        &u = problem.u;

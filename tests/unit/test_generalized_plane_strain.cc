@@ -55,9 +55,7 @@ namespace
                                              c.plastic,
                                              mechanics::PlanarModel::generalized_plane_strain,
                                              c.locking);
-    options.conditions
-        = {test_support::surface_load(3, mechanics::BoundaryConditionType::pressure, "30 + 5 * x"),
-           test_support::surface_load(1, mechanics::BoundaryConditionType::traction, "4; -3 * y")};
+    options.conditions = test_support::tangent_test_loads();
     test_support::AssemblerTestProblem<2> problem(options, test_support::distorted_block());
     const unsigned int                    n = problem.n_dofs();
     TrilinosWrappers::MPI::Vector        &u = problem.u;
