@@ -12,7 +12,8 @@
 #    the depth probes at the pitch point and in the root of the rolled flank.
 #  gear_ausrolling_finished (prm/gear_ausrolling_finished.prm, the chain to the finished gear): the
 #    ISO 1328 quantities of the finished flank, the residual hoop stress 0.2 mm below the pitch
-#    point and the root, the martensite 0.05 mm below the pitch point, the peak die force.
+#    point and the root, the martensite 0.05 mm below the pitch point, the peak die force;
+#    gear_ausrolling_finished_bulk: the same on the whole-mesh sequence of gear_rolling_bulk.
 #  disk_rolling (prm/disk_rolling_quick.prm): the 15 degree ring refined to 15 / 2^level degrees
 #    in the 12 mm band, radially likewise; steps = rolling steps per revolution (Coulomb mu = 0.3); mean
 #    die force over 60-300 degrees of revolution, residual lobe (max) and trough (min) of the rim,
@@ -92,6 +93,27 @@ case "$SCENE" in
       --profile "s_tt_root_0.2=depth_root_right_*.csv:s:stress_tt:at(0.2)"
       --profile "f_M_pitch_0.05=depth_pitch_right_*.csv:s:martensite:at(0.05)")
     PLOT=gear_ausrolling_finished_work_precision.png ;;
+  gear_ausrolling_finished_bulk)
+    # the same quantities on the whole-mesh sequence of gear_rolling_bulk (the case below the
+    # whole outline transforms, not only the band the die touches; level 2 is the shipped scene)
+    PRM=prm/gear_ausrolling_finished.prm
+    DEFAULTS=("1 2 3" "" 2)
+    LEVEL_SETS=(--level-set "Geometry/Global refinements = {level}"
+      --level-set "Adaptivity/Minimum level = {level}"
+      --level-set "Adaptivity/Maximum level = {level + 3}")
+    SCENE_OPTIONS=(
+      --set "Output/Write VTU = true"
+      --history "F_peak=max:hypot(die_die_force_x, die_die_force_y)"
+      --history "martensite_mean=last:martensite_mean"
+      --after "/usr/bin/python3 $ROOT/benchmarks/gear_rolling/gear_quantities.py {out} --scale 0.9973324"
+      --value "d_n_min=d_n_min" --value "F_alpha=F_alpha" --value "f_f_alpha=f_f_alpha"
+      --value "f_H_alpha=f_H_alpha"
+      --profile "d_n=residual_dn.csv:R:d_n"
+      --profile "s_tt_pitch_0.2=depth_pitch_right_*.csv:s:stress_tt:at(0.2)"
+      --profile "s_tt_pitch_min=depth_pitch_right_*.csv:s:stress_tt:min"
+      --profile "s_tt_root_0.2=depth_root_right_*.csv:s:stress_tt:at(0.2)"
+      --profile "f_M_pitch_0.05=depth_pitch_right_*.csv:s:martensite:at(0.05)")
+    PLOT=gear_ausrolling_finished_bulk_work_precision.png ;;
   disk_rolling)
     PRM=prm/disk_rolling_quick.prm
     DEFAULTS=("1 2 3" "144 288 576" 2)
@@ -106,7 +128,7 @@ case "$SCENE" in
       --profile "rim=profile_*.csv:angle:radial_displacement")
     PLOT=disk_work_precision.png ;;
   *)
-    echo "usage: $0 gear_rolling|gear_rolling_bulk|gear_ausrolling|gear_ausrolling_finished|disk_rolling [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [options]" >&2
+    echo "usage: $0 gear_rolling|gear_rolling_bulk|gear_ausrolling|gear_ausrolling_finished[_bulk]|disk_rolling [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [options]" >&2
     exit 1 ;;
 esac
 shift
