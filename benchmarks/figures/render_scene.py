@@ -211,7 +211,7 @@ def main(argv):
     bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
     bar.TitleFontSize = 18
     bar.LabelFontSize = 16
-    bar.RangeLabelFormat = "%-#.3g"
+    bar.RangeLabelFormat = "%.4g"
     bar.WindowLocation = "Any Location"
     bar.Orientation = "Vertical"
     bar.Position = [0.88, 0.12]
@@ -234,6 +234,7 @@ def main(argv):
             display.LineWidth = 3.0
             display.SetScalarBarVisibility(view, False)
 
+    pv.Render(view)  # the first render resets the camera: place it afterwards
     # Camera: parallel projection along --view onto --focus, fitted to the workpiece or --scale.
     focus = args.focus or [0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
                            0.0 if args.reflect_z else 0.5 * (bounds[4] + bounds[5])]
