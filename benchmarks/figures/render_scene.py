@@ -20,6 +20,7 @@ Options:
   --time T            output step nearest to time T instead of --step
   --range LO,HI       colour range (default: the data range of the step)
   --colormap NAME     ParaView preset (default: Turbo; stresses read well in Cool to Warm)
+  --reverse           reverse the colour map (e.g. Reds from white at 0 to dark red)
   --symmetric         colour range symmetric about 0 (stress components)
   --view DX,DY,DZ     direction from the focal point to the camera (default 0,0,1: the xy plane)
   --up UX,UY,UZ       camera up vector (default 0,1,0)
@@ -83,6 +84,7 @@ def parse_arguments(argv):
     parser.add_argument("--time", type=float)
     parser.add_argument("--range", type=lambda t: vector(t, 2))
     parser.add_argument("--colormap", default="Turbo")
+    parser.add_argument("--reverse", action="store_true")
     parser.add_argument("--symmetric", action="store_true")
     parser.add_argument("--view", type=vector, default=[0.0, 0.0, 1.0])
     parser.add_argument("--up", type=vector, default=[0.0, 1.0, 0.0])
@@ -172,7 +174,10 @@ def main(argv):
     pv.SetActiveView(view)
 
     lut = pv.GetColorTransferFunction(args.field)
-    lut.ApplyPreset(args.colormap, True)
+    if not lut.ApplyPreset(args.colormap, True):
+        fail(f"--colormap {args.colormap}: not a ParaView colour preset (e.g. Turbo, Reds, 'Cool to Warm')")
+    if args.reverse:
+        lut.InvertTransferFunction()
     if args.component >= 0:
         lut.VectorMode = "Component"
         lut.VectorComponent = args.component
@@ -183,6 +188,8 @@ def main(argv):
         display = pv.Show(piece, view)
         pv.ColorBy(display, ("POINTS", args.field))
         display.LookupTable = lut
+        display.Ambient = 0.25  # flat faces turned away from ParaView's key light stay readable
+        display.Diffuse = 0.85
         if args.edges:
             display.SetRepresentationType("Surface With Edges")
             display.EdgeColor = [0.3, 0.3, 0.3]
