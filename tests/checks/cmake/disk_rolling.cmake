@@ -88,3 +88,27 @@ ausroll_add_script_check(NAME disk_rolling_3d_round_coarsen_rolling
   SCRIPT ${AUSROLL_CHECKS_DIR}/check_disk_rolling_3d_coarsen_rolling.py)
 ausroll_add_parallel_check(NAME disk_rolling_3d_round_coarsen_rolling_np2
   PRM ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_3d_round_coarsen_rolling.prm HISTORY out/history.csv)
+
+# np = 1 against np = 2 for the other 3D disk checks (issue 39, item 4: every 3D scene's short check
+# on 1 and 2 ranks, every history column within 1e-8 of its largest value):
+# - the flat-faced die (scenes/disk_rolling_3d_flat_short.prm) cut after the feed and one 1.25
+#   degree rolling step (t = 5 of 6): contact across the whole thickness, rounded die edges,
+#   Coulomb slip. Measured 2026-12-07 (ctest, load 9-12): 5 steps, 65 Newton solves, np = 1 5.1 s
+#   CPU; the 6-step run: np = 2 equal to 5e-14 of each column's largest value.
+# - the plane-strain slice (scenes/disk_rolling_3d_slice.prm) cut after the feed and 5 degrees
+#   (t = 8 of 20): 8 steps, 53 Newton solves, np = 1 1.8 s CPU; the 20-step run: np = 2 equal.
+# On the loaded machine the np = 2 runs take 2-5 times their CPU in wall time (the ranks wait for
+# the cores); on an idle machine each check is its np = 1 CPU plus about half of it.
+foreach(_case "flat_short|5" "slice|8")
+  string(REPLACE "|" ";" _case "${_case}")
+  list(GET _case 0 _name)
+  list(GET _case 1 _end)
+  set(_prm ${CMAKE_CURRENT_BINARY_DIR}/disk_rolling_3d_${_name}_np2.prm)
+  execute_process(COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/scripts/prm_variant.py
+      ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_3d_${_name}.prm ${_prm}
+      "Loading/End time = ${_end}" "Loading/Number of steps = ${_end}"
+    COMMAND_ERROR_IS_FATAL ANY)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+    ${AUSROLL_CHECKS_DIR}/scenes/disk_rolling_3d_${_name}.prm)
+  ausroll_add_parallel_check(NAME disk_rolling_3d_${_name}_np2 PRM ${_prm} HISTORY out/history.csv)
+endforeach()
