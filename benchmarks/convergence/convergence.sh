@@ -10,6 +10,9 @@
 #    part of the rolled layer lies, is refined too; level 2 is the shipped scene): the ISO 1328
 #    profile quantities F_alpha, f_f_alpha, f_H_alpha, d_n, and the residual stress profiles of
 #    the depth probes at the pitch point and in the root of the rolled flank.
+#  gear_ausrolling_finished (prm/gear_ausrolling_finished.prm, the chain to the finished gear): the
+#    ISO 1328 quantities of the finished flank, the residual hoop stress 0.2 mm below the pitch
+#    point and the root, the martensite 0.05 mm below the pitch point, the peak die force.
 #  disk_rolling (prm/disk_rolling_quick.prm): the 15 degree ring refined to 15 / 2^level degrees
 #    in the 12 mm band, radially likewise; steps = rolling steps per revolution (Coulomb mu = 0.3); mean
 #    die force over 60-300 degrees of revolution, residual lobe (max) and trough (min) of the rim,
@@ -67,6 +70,28 @@ case "$SCENE" in
       --value "d_n_min=d_n_min" --value "p_n_max=p_n_max" --value "plastic_depth=plastic_depth"
       --profile "d_n=residual_dn.csv:R:d_n")
     PLOT=gear_ausrolling_work_precision.png ;;
+  gear_ausrolling_finished)
+    # the whole chain (rolling in the bath, cooling with the transformation): the finished flank
+    # of the last output against the involute scaled by the body's free strain at 20 C (0.99733,
+    # prm/gear_ausrolling_finished.prm); n = rolling steps, the cooling steps scale with them
+    PRM=prm/gear_ausrolling_finished.prm
+    DEFAULTS=("3 4 5" "120 240 480" 5)
+    SCENE_OPTIONS=(
+      --set "Output/Write VTU = true"
+      --step-set "Stages/Stage 0/Step size = {0.12 / n}"
+      --step-set "Stages/Stage 1/Step size = {960 / n}"
+      --step-set "Loading/Number of steps = {1001 * n}"
+      --history "F_peak=max:hypot(die_die_force_x, die_die_force_y)"
+      --history "martensite_mean=last:martensite_mean"
+      --after "/usr/bin/python3 $ROOT/benchmarks/gear_rolling/gear_quantities.py {out} --scale 0.9973324"
+      --value "d_n_min=d_n_min" --value "F_alpha=F_alpha" --value "f_f_alpha=f_f_alpha"
+      --value "f_H_alpha=f_H_alpha"
+      --profile "d_n=residual_dn.csv:R:d_n"
+      --profile "s_tt_pitch_0.2=depth_pitch_right_*.csv:s:stress_tt:at(0.2)"
+      --profile "s_tt_pitch_min=depth_pitch_right_*.csv:s:stress_tt:min"
+      --profile "s_tt_root_0.2=depth_root_right_*.csv:s:stress_tt:at(0.2)"
+      --profile "f_M_pitch_0.05=depth_pitch_right_*.csv:s:martensite:at(0.05)")
+    PLOT=gear_ausrolling_finished_work_precision.png ;;
   disk_rolling)
     PRM=prm/disk_rolling_quick.prm
     DEFAULTS=("1 2 3" "144 288 576" 2)
@@ -81,7 +106,7 @@ case "$SCENE" in
       --profile "rim=profile_*.csv:angle:radial_displacement")
     PLOT=disk_work_precision.png ;;
   *)
-    echo "usage: $0 gear_rolling|gear_rolling_bulk|gear_ausrolling|disk_rolling [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [options]" >&2
+    echo "usage: $0 gear_rolling|gear_rolling_bulk|gear_ausrolling|gear_ausrolling_finished|disk_rolling [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [options]" >&2
     exit 1 ;;
 esac
 shift

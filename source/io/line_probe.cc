@@ -215,7 +215,8 @@ namespace ausroll::io
                               const DoFHandler<dim>                      &dof_handler,
                               const TrilinosWrappers::MPI::Vector        &solution,
                               const mechanics::MaterialPointStorage<dim> &material_points,
-                              const bool                                  small_strain) const
+                              const bool                                  small_strain,
+                              const bool                                  state_columns) const
   {
     const MPI_Comm comm = dof_handler.get_communicator();
     const auto     components = postprocess::tensor_components<dim>();
@@ -238,6 +239,7 @@ namespace ausroll::io
         const auto          points = material_points.get_data(s.cell);
         const auto          weights = interpolation.weights(s.unit_point);
         double              fields[6] = {0, 0, 0, 0, 0, 0};
+        double              state[4] = {0, 0, 0, 0}; // temperature, martensite, bainite, carbon
         std::vector<double> more(n_shear + components.size(), 0.); // shear stresses, strain
         for (unsigned int k = 0; k < points.size(); ++k)
         {
@@ -254,6 +256,10 @@ namespace ausroll::io
           fields[3] += weights[k] * st.stress[0][1];
           fields[4] += weights[k] * st.von_mises_stress();
           fields[5] += weights[k] * st.equivalent_plastic_strain;
+          state[0] += weights[k] * st.temperature;
+          state[1] += weights[k] * st.martensite;
+          state[2] += weights[k] * st.bainite;
+          state[3] += weights[k] * st.carbon;
         }
         std::vector<double> row{double(i), s.position.distance(probe.start)};
         for (unsigned int d = 0; d < dim; ++d)
@@ -286,6 +292,8 @@ namespace ausroll::io
             row.push_back(t * (sigma * w));
           }
         }
+        if (state_columns)
+          row.insert(row.end(), state, state + 4);
         rows.push_back(row);
       }
       const std::vector<std::vector<double>> all = gather_sorted_rows(comm, rows);
@@ -305,6 +313,8 @@ namespace ausroll::io
       if (probe.framed)
         out << (dim == 2 ? ",stress_nn,stress_tt,stress_nt"
                          : ",stress_nn,stress_tt,stress_ww,stress_nt,stress_nw,stress_tw");
+      if (state_columns)
+        out << ",temperature,martensite,bainite,carbon";
       out << '\n' << std::setprecision(10);
       for (const auto &row : all)
       {

@@ -75,7 +75,8 @@ namespace ausroll::io
         "",
         Patterns::Anything(),
         "Straight lines 'name: x0, y0, x1, y1, n; ...' (reference coordinates, n points) "
-        "along which displacement, stress and plastic strain are written to "
+        "along which displacement, stress, strain and plastic strain (thermal scenes: also "
+        "temperature, martensite and bainite fractions, carbon content) are written to "
         "probe_<name>_NNNN.csv at every VTU output.");
     prm.declare_entry(
         "Depth probes",

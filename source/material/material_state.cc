@@ -42,6 +42,7 @@ namespace ausroll::material
     data.push_back(martensite);
     data.push_back(carbon);
     data.push_back(bainite);
+    data.push_back(initial_martensite);
   }
 
   void MaterialState::unpack(const double *data)
@@ -59,7 +60,8 @@ namespace ausroll::material
     plastic_work = *data++;
     martensite = *data++;
     carbon = *data++;
-    bainite = *data;
+    bainite = *data++;
+    initial_martensite = *data;
   }
 
   double MaterialState::von_mises_stress() const

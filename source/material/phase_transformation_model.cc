@@ -2,9 +2,13 @@
 #include <ausroll/core/parse_utilities.h>
 #include <ausroll/material/phase_transformation_model.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <sstream>
 
 namespace ausroll::material
 {
@@ -20,7 +24,20 @@ namespace ausroll::material
                       "Track the martensitic transformation of metastable austenite on cooling "
                       "(needs Thermal/Enabled): martensite fraction by Koistinen-Marburger below "
                       "Ms(C), and its volume change as a transformation strain. The material "
-                      "starts as austenite.");
+                      "starts as austenite (see Initial state).");
+    prm.declare_entry("Initial state",
+                      "austenite",
+                      Patterns::Selection("austenite|quenched|undercooled austenite"),
+                      "The phases at t = 0. austenite: all austenite, which needs Ms(C) below "
+                      "Thermal/Initial temperature at every material point. quenched: the run "
+                      "starts after a quench to Thermal/Initial temperature (e.g. into the bath "
+                      "of ausrolling): where Ms(C) lies above it (a low-carbon core) the point "
+                      "holds the Koistinen-Marburger fraction 1 - exp(-b (Ms(C) - T_0)) of "
+                      "martensite, in the stress-free reference (the transformation strain "
+                      "counts from it; the quench's own stresses and distortion are not modelled); "
+                      "the rest is metastable austenite. undercooled austenite: all austenite "
+                      "even below Ms(C): the martensite of the undercooling forms in the first "
+                      "step (an instantaneous quench).");
     prm.declare_entry("Carbon content",
                       defaults.carbon_content,
                       Patterns::Anything(),
@@ -129,6 +146,8 @@ namespace ausroll::material
     input_directory = directory;
     prm.enter_subsection("Phases");
     enabled = prm.get_bool("Enabled");
+    quenched = prm.get("Initial state") == "quenched";
+    undercooled = prm.get("Initial state") == "undercooled austenite";
     carbon_content = prm.get("Carbon content");
     case_boundaries = parse_unsigned_list(prm.get("Case boundaries"), "Phases/Case boundaries");
     martensite_start = prm.get("Martensite start temperature");
@@ -155,6 +174,9 @@ namespace ausroll::material
     require(driving_force_slope > 0.,
             "Phases/Driving force slope",
             "must be positive (the driving force grows with undercooling)");
+    require(enabled || (!quenched && !undercooled),
+            "Phases/Initial state",
+            "describes the phases at t = 0: set Phases/Enabled = true");
     require(enabled || !mechanical_stabilisation,
             "Phases/Mechanical stabilisation",
             "acts on the transformation: set Phases/Enabled = true");
@@ -248,10 +270,14 @@ namespace ausroll::material
 
   double PhaseTransformationModel::transformation_stretch(const double f,
                                                           const double C,
-                                                          const double f_b) const
+                                                          const double f_b,
+                                                          const double f_0) const
   {
     if (f_b > 0.)
-      return std::cbrt(1. + f * dv.value(C) / 100. + f_b * dv_bainite->value(C) / 100.);
+      return std::cbrt((1. + f * dv.value(C) / 100. + f_b * dv_bainite->value(C) / 100.)
+                       / (1. + f_0 * dv.value(C) / 100.));
+    if (f_0 > 0.)
+      return std::cbrt((1. + f * dv.value(C) / 100.) / (1. + f_0 * dv.value(C) / 100.));
     return f > 0. ? std::cbrt(1. + f * dv.value(C) / 100.) : 1.;
   }
 
@@ -264,11 +290,12 @@ namespace ausroll::material
     const double f_b = bainite_fraction(old.bainite, old.martensite, old.temperature, step_length);
     const double f = martensite_fraction(
         old.martensite, old.carbon, old.temperature, f_b, old.equivalent_plastic_strain);
-    const double theta = transformation_stretch(f, old.carbon, f_b);
+    const double theta = transformation_stretch(f, old.carbon, f_b, old.initial_martensite);
     // the fractions at the end of the step first: the inner return map reads them (TRIP, mixture)
     state.martensite = f;
     state.bainite = f_b;
     state.carbon = old.carbon;
+    state.initial_martensite = old.initial_martensite;
     inner->evaluate(remove_stretch(F, theta), old, state, P, tangent);
     scale_response(P, tangent, theta);
     if (trip_heat)
@@ -285,10 +312,85 @@ namespace ausroll::material
     }
   }
 
+  void PhaseTransformationModel::make_admissible(MaterialState &state) const
+  {
+    // the transfer interpolates every component of the state alike: a steep front of the
+    // fractions (the martensite below the case, the carbon profile) overshoots
+    state.martensite = std::clamp(state.martensite, 0., 1.);
+    state.bainite = std::clamp(state.bainite, 0., 1. - state.martensite);
+    state.initial_martensite = std::clamp(state.initial_martensite, 0., state.martensite);
+    state.carbon = std::max(state.carbon, 0.);
+    inner->make_admissible(state);
+  }
+
   void PhaseTransformationModel::rebase(MaterialState &state, const Tensor<2, 3> &F) const
   {
-    inner->rebase(
-        state,
-        remove_stretch(F, transformation_stretch(state.martensite, state.carbon, state.bainite)));
+    inner->rebase(state,
+                  remove_stretch(F,
+                                 transformation_stretch(state.martensite,
+                                                        state.carbon,
+                                                        state.bainite,
+                                                        state.initial_martensite)));
   }
+
+  template <int dim>
+  void initialize_phase_state(
+      const PhaseParameters                                                      &parameters,
+      const Triangulation<dim>                                                   &triangulation,
+      CellDataStorage<typename Triangulation<dim>::cell_iterator, MaterialPoint> &points,
+      const MPI_Comm                                                              comm)
+  {
+    const CarbonFunction ms(parameters.martensite_start, "Phases/Martensite start temperature");
+    const double         b = parameters.koistinen_marburger;
+    // the points that lie below Ms(C) at the initial temperature: how many, by how much, and the
+    // lowest carbon content among them (the highest Ms)
+    unsigned long long below = 0;
+    double             excess = 0., lowest_carbon = std::numeric_limits<double>::max();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &point : points.get_data(cell))
+        {
+          MaterialState &state = point->committed;
+          const double   undercooling = ms.value(state.carbon) - state.temperature;
+          const double   f_0 = undercooling > 0. ? 1. - std::exp(-b * undercooling) : 0.;
+          if (undercooling > 0.)
+          {
+            ++below;
+            excess = std::max(excess, undercooling);
+            lowest_carbon = std::min(lowest_carbon, state.carbon);
+          }
+          if (!parameters.quenched)
+            continue;
+          state.martensite = state.initial_martensite = f_0;
+          state.bainite = 0.;
+          point->trial = state;
+        }
+    // collective, so that every rank stops with the same message
+    below = Utilities::MPI::sum(below, comm);
+    if (parameters.quenched || parameters.undercooled || below == 0)
+      return;
+    excess = Utilities::MPI::max(excess, comm);
+    lowest_carbon = Utilities::MPI::min(lowest_carbon, comm);
+    std::ostringstream text;
+    text << "the material starts as austenite, but Thermal/Initial temperature lies below "
+            "Phases/Martensite start temperature at "
+         << below << " material points (by up to " << excess
+         << " K; Ms = " << ms.value(lowest_carbon) << " C at the lowest carbon content there, "
+         << lowest_carbon
+         << " wt%): start above Ms, or set Initial state = quenched (the martensite of the quench "
+            "to the initial temperature in the stress-free reference) or undercooled austenite "
+            "(it transforms in the first step)";
+    throw InputError("Phases/Initial state: " + text.str());
+  }
+
+  template void
+  initialize_phase_state<2>(const PhaseParameters &,
+                            const Triangulation<2> &,
+                            CellDataStorage<Triangulation<2>::cell_iterator, MaterialPoint> &,
+                            const MPI_Comm);
+  template void
+  initialize_phase_state<3>(const PhaseParameters &,
+                            const Triangulation<3> &,
+                            CellDataStorage<Triangulation<3>::cell_iterator, MaterialPoint> &,
+                            const MPI_Comm);
 } // namespace ausroll::material

@@ -7,6 +7,7 @@
  */
 #include <ausroll/core/exceptions.h>
 #include <ausroll/material/carbon_profile.h>
+#include <ausroll/material/phase_transformation_model.h>
 #include <ausroll/scene/scene.h>
 
 #include <algorithm>
@@ -54,7 +55,7 @@ namespace ausroll::scene
   }
 
   template <int dim>
-  void Scene<dim>::initialize_carbon()
+  void Scene<dim>::initialize_phases()
   {
     // the depth is measured from Phases/Case boundaries, by default from the surface the dies
     // touch (their Candidate boundaries)
@@ -77,6 +78,10 @@ namespace ausroll::scene
                                 system.dof_handler,
                                 system.material_points,
                                 comm);
+    // the phases at t = 0 follow from the carbon content and the initial temperature
+    initialize_temperature();
+    material::initialize_phase_state(
+        parameters.phases, system.triangulation, system.material_points, comm);
     ++system.assembly_cache.state;
   }
 
@@ -151,7 +156,7 @@ namespace ausroll::scene
 
   template void                 Scene<2>::setup_thermal();
   template void                 Scene<2>::initialize_temperature();
-  template void                 Scene<2>::initialize_carbon();
+  template void                 Scene<2>::initialize_phases();
   template void                 Scene<2>::thermal_step(const solver::LoadStep &);
   template solver::NewtonResult Scene<2>::iterate_coupling(const solver::NewtonResult &);
   template void                 Scene<2>::restore_temperature();
@@ -159,6 +164,6 @@ namespace ausroll::scene
   template void                 Scene<3>::restore_temperature();
   template void                 Scene<3>::setup_thermal();
   template void                 Scene<3>::initialize_temperature();
-  template void                 Scene<3>::initialize_carbon();
+  template void                 Scene<3>::initialize_phases();
   template void                 Scene<3>::thermal_step(const solver::LoadStep &);
 } // namespace ausroll::scene

@@ -86,7 +86,7 @@ namespace ausroll::scene
       system.initialize_material_points(assembler->quadrature().size());
       setup_thermal();
       if (!resuming && parameters.phases.enabled)
-        initialize_carbon(); // its range errors before the output directory exists
+        initialize_phases(); // its input errors before the output directory exists
       point_transfer = std::make_unique<adaptivity::MaterialPointTransfer<dim>>(
           system.triangulation,
           system.material_points,
@@ -274,7 +274,7 @@ namespace ausroll::scene
         = contact.active() ? contact.n_stick_slip() : std::pair<unsigned int, unsigned int>();
     const io::StepSummary summary{step_number,
                                   step.time,
-                                  step.time / parameters.loading.end_time,
+                                  parameters.stages.progress(step.time, parameters.loading),
                                   start_fraction,
                                   step.result,
                                   step.cutbacks,
@@ -364,7 +364,7 @@ namespace ausroll::scene
         // the initial fields on the refined mesh, not interpolated
         initialize_temperature();
         if (parameters.phases.enabled)
-          initialize_carbon();
+          initialize_phases();
       }
       solver::NewtonResult initial;
       initial.converged = true;
@@ -372,7 +372,7 @@ namespace ausroll::scene
       write_output();
     }
 
-    start_fraction = time / parameters.loading.end_time; // done before this process started
+    start_fraction = parameters.stages.progress(time, parameters.loading); // done before
     eta.start(start_fraction, wall_clock.wall_time());
     smallest_extent = system.smallest_extent();
     large_displacement_warned = !model->is_small_strain();

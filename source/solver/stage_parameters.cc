@@ -3,6 +3,7 @@
 #include <ausroll/solver/loading_parameters.h>
 #include <ausroll/solver/stage_parameters.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -82,6 +83,21 @@ namespace ausroll::solver
   double StageParameters::step_size(const unsigned int k, const double loading_step) const
   {
     return stages[k].step_size > 0. ? stages[k].step_size : loading_step;
+  }
+
+  double StageParameters::progress(const double t, const LoadingParameters &loading) const
+  {
+    if (stages.empty())
+      return t / loading.end_time;
+    const double loading_step = loading.end_time / loading.number_of_steps;
+    double       done = 0., total = 0.;
+    for (unsigned int k = 0; k < stages.size(); ++k)
+    {
+      const double length = stages[k].end_time - start_time(k), step = step_size(k, loading_step);
+      total += length / step;
+      done += std::clamp(t - start_time(k), 0., length) / step;
+    }
+    return done / total;
   }
 
   void StageParameters::declare_parameters(ParameterHandler &prm)

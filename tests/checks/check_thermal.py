@@ -57,6 +57,11 @@ dilatometry  the 3D block (free on its symmetry planes) with all faces cooled fr
              fraction to 1e-8: the interior temperature is the CG solution of the heat equation (to
              1e-7 K here, and df/dT <= b), the history has 10 digits. The Newton tolerance is 1e-8 N (1e-12 of the internal forces E alpha dT A
              ~ 1e4 N that cancel in the free block: 1e-10 is below their round-off).
+quenched     (ctest check/thermal_trip) Phases/Initial state = quenched: the dilatometry block at
+             0.2 wt% C (Ms 364.7 C) starts at 250 C holding the Koistinen-Marburger fraction f_0 =
+             1 - exp(-0.011 (Ms - 250)) = 0.717 in its stress-free reference and cools to 20 C:
+             fractions from f_0 on, corner (theta_th ((1 + f dV/V) / (1 + f_0 dV/V))^(1/3) - 1) L
+             (finite strain) and no reactions, to the tolerances of dilatometry.
 reheat       the dilatometry block cooled to 50 C (T = 250 - 400 t up to t = 0.5) and heated again to 200 C:
              the martensite fraction keeps its largest value, 1 - exp(-b (Ms - 50)), while the block
              heats (irreversible), to 1e-8; the run interrupted at step 7 (during the heating,
@@ -117,13 +122,14 @@ mixture      (ctest check/thermal_trip) the same block, K = 0, compressed in y (
              has 10 digits; Newton to 1e-12 of the force level: the default 1e-6 leaves 2e-7 in
              the reaction of the finite-strain models).
 carbon_yield (ctest check/thermal_trip) pure martensite at two carbon contents: the block at 20 C
-             from the start (faces held at 20 C, Koistinen-Marburger coefficient 10 1/K: f = 1
-             - exp(-10 (Ms - 20)) is 1 in double at the first step for C = 0.2 and 0.8), with
+             from the start (faces held at 20 C, Initial state = quenched with Koistinen-Marburger
+             coefficient 10 1/K: f_0 = 1 - exp(-10 (Ms - 20)) is 1 in double for C = 0.2 and 0.8,
+             the stress-free reference), with
              Phases/Martensite yield stress = 413 + 1720*sqrt(C) (Krauss' fit, doc/theory.md
              section 8) and Martensite hardening modulus = 3000 + 2000*C + T, compressed in y
              (top face -0.1 t mm, 10 steps, small strain). The transformation strain is
-             isotropic and stress-free, so the mechanical axial strain is eps_m = u_y/5 -
-             (theta_tr - 1), theta_tr = (1 + dV/V(C))^(1/3), and once yielded the uniaxial
+             isotropic and stress-free, so the mechanical axial strain is eps_m = u_y/5 (the
+             martensite of t = 0 is the reference: no transformation strain), and once yielded the uniaxial
              closed form of linear hardening |sigma| = (sigma_y,M(C) + H_M |eps_m|) / (1 + H_M/E);
              the reaction on y = 5 is A |sigma| in every plastic step, 1e-8 of sigma_y,M A (the
              return map solves the yield condition to 1e-13, the history has 10 digits, Newton
@@ -141,7 +147,7 @@ trip_heat    (ctest check/thermal_trip) the TRIP dissipation and the latent heat
              sigma with dev sigma fixed by the dead load, so the dissipation of a step is
              K sigma^2 (phi(f_n) - phi(f_n-1)) exactly, and T(t_n) = 300 + (beta K sigma^2
              phi(f_B(t_n)) + rho L_B f_B(t_n)) / (rho c); (b) martensite: started at 20 C below
-             Ms (Ms 110.9 C at 0.8 wt% C): KM's f = 1 - exp(-b (Ms - 20)) forms in the first step,
+             Ms (Ms 110.9 C at 0.8 wt% C; Initial state = undercooled austenite): KM's f = 1 - exp(-b (Ms - 20)) forms in the first step,
              then the block is hotter and nothing more forms; Latent heat 1e8 mm^2/s^2: T = 20 +
              (beta K sigma^2 phi(f) + rho L f) / (rho c) from the first step on. Both to 1e-8 of
              the final rise (backward Euler of a homogeneous source is exact; the history's 10
@@ -492,6 +498,38 @@ def main():
             checks(f"dilatometry ({kinematics}): Koistinen-Marburger fraction to 1e-8", worst_f < 1e-8)
             checks(f"dilatometry ({kinematics}): stress-free (reactions below 1e-6 N)", reactions < 1e-6)
 
+    if "quenched" in cases:
+        # Phases/Initial state = quenched: a low-carbon block (Ms(0.2) = 364.7 C) starts at 250 C
+        # with the Koistinen-Marburger fraction f_0 of that temperature, stress-free, and cools to
+        # 20 C: the transformation strain counts from f_0
+        carbon = 0.2
+        ms = 539 - 423 * carbon - 30.4 * 0.55 - 17.7 * 3.25 - 12.1 * 1.2 - 7.5 * 0.12
+        dv = (4.64 - 0.53 * carbon) / 100.0
+        f_0 = 1.0 - math.exp(-0.011 * (ms - 250.0))
+        settings = phase_block("250 - 230 * t") + [f"Phases/Carbon content={carbon}",
+                                                   "Phases/Initial state=quenched",
+                                                   "Model/Kinematics=finite strain"]
+        run(ausroll, block, settings, "quenched")
+        rows = history("quenched")
+        worst, worst_f = 0.0, 0.0
+        for row in rows:
+            T = 250.0 - 230.0 * float(row["time"])
+            f = 1.0 - math.exp(-0.011 * (ms - T))
+            stretch = (1.0 + ALPHA * (T - 20.0)) * ((1.0 + f * dv) / (1.0 + f_0 * dv)) ** (1.0 / 3.0) - 1.0
+            for column in ("martensite_min", "martensite_max", "martensite_mean"):
+                worst_f = max(worst_f, abs(float(row[column]) - f))
+            if row is rows[0]:
+                continue  # the initial row: not evaluated yet (the reference temperature's state)
+            for c, length in (("x", 10.0), ("y", 5.0), ("z", 4.0)):
+                worst = max(worst, abs(float(row[f"corner_u{c}"]) - stretch * length) / 0.01)
+        reactions = max(abs(float(rows[-1][f"reaction_{b}_{c}"])) for b in (1, 3) for c in "xyz")
+        print(f"quenched: Ms {ms:.2f} C, f_0 {f_0:.6f}, final martensite {float(rows[-1]['martensite_mean']):.6f}, "
+              f"worst corner deviation {worst:.2e} of 0.01 mm, worst fraction deviation {worst_f:.2e}, "
+              f"largest reaction {reactions:.2e} N")
+        checks("quenched: initial fraction f_0 = KM(Ms - 250 C) and every step's KM fraction to 1e-8", worst_f < 1e-8)
+        checks("quenched: corner (theta_th ((1 + f dV) / (1 + f_0 dV))^(1/3) - 1) L to 1e-8 of 0.01 mm", worst < 1e-8)
+        checks("quenched: stress-free (reactions below 1e-6 N)", reactions < 1e-6)
+
     if "bainite" in cases:
         n = math.log(math.log(0.01) / math.log(0.99)) / math.log(300.0 / 15.0)
         k = -math.log(0.99) / 15.0 ** n
@@ -643,10 +681,11 @@ def main():
         for carbon in (0.2, 0.8):
             sigma_m = 413.0 + 1720.0 * math.sqrt(carbon)
             h_m = 3000.0 + 2000.0 * carbon + 20.0
-            theta_tr = (1.0 + (4.64 - 0.53 * carbon) / 100.0) ** (1.0 / 3.0)
+            theta_tr = 1.0  # quenched: the martensite of t = 0 is the stress-free reference
             settings = [f"Thermal/Thermal expansion={ALPHA}", "Thermal/Initial temperature=20",
                         "Thermal/Specific heat=1", "Phases/Enabled=true", f"Phases/Carbon content={carbon}",
-                        "Phases/Koistinen-Marburger coefficient=10", "Loading/Number of steps=10",
+                        "Phases/Koistinen-Marburger coefficient=10", "Phases/Initial state=quenched",
+                        "Loading/Number of steps=10",
                         "Material/Hardening modulus=0", "Thermal/Taylor-Quinney coefficient=0",
                         "Boundary conditions/Condition 3/Value=-0.1*t",
                         f"Phases/Martensite yield stress={yield_m}",
@@ -665,7 +704,7 @@ def main():
                 worst = max(worst, abs(abs(float(row["reaction_3_y"])) - expected) / (sigma_m * 40.0))
             print(f"carbon_yield (C = {carbon}): sigma_y,M {sigma_m:.4f} MPa, H_M {h_m:.1f} MPa, {plastic} plastic "
                   f"steps, worst reaction deviation {worst:.2e} of sigma_y,M A, martensite {min(fractions):.17g}")
-            checks(f"carbon_yield (C = {carbon}): pure martensite from the first step", min(fractions) == 1.0)
+            checks(f"carbon_yield (C = {carbon}): pure martensite from the start (quenched)", min(fractions) == 1.0)
             checks(f"carbon_yield (C = {carbon}): reaction = A (sigma_y,M(C) + H_M |eps_m|) / (1 + H_M/E) to 1e-8",
                    worst < 1e-8 and plastic >= 4)
 
@@ -699,7 +738,8 @@ def main():
         checks("trip_heat (bainite): T = T0 + (beta K sigma^2 phi(f_B) + rho L_B f_B) / (rho c) to 1e-8",
                worst < 1e-8 and f_b > 0.4)
 
-        run(ausroll, block, base + ["Thermal/Initial temperature=20", "Loading/Number of steps=4",
+        run(ausroll, block, base + ["Thermal/Initial temperature=20", "Phases/Initial state=undercooled austenite",
+                                    "Loading/Number of steps=4",
                                     "Phases/TRIP heating=true", f"Phases/Latent heat={latent}"], "trip_heat_martensite")
         f_m = martensite(20.0)
         rise = (beta * K * sigma ** 2 * phi(f_m) + rho * latent * f_m) / rho_c

@@ -332,6 +332,27 @@ TEST(PhaseTransformationModel, KoistinenMarburgerIrreversibleAndAndrewsMs)
   EXPECT_EQ(model.martensite_fraction(f20, 0.8, 400.), f20); // above Ms: kept
   EXPECT_NEAR(model.transformation_stretch(1., 0.8), std::cbrt(1. + (4.64 - 0.424) / 100.), 1e-14);
   EXPECT_EQ(model.transformation_stretch(0., 0.8), 1.);
+  // the quenched reference (Initial state = quenched): the stretch counts from f_0
+  const double dv = (4.64 - 0.424) / 100.;
+  EXPECT_NEAR(model.transformation_stretch(0.9, 0.8, 0., 0.3),
+              std::cbrt((1. + 0.9 * dv) / (1. + 0.3 * dv)),
+              1e-14);
+  EXPECT_EQ(model.transformation_stretch(0.3, 0.8, 0., 0.3), 1.);
+  // a transferred state that overshot is brought back: fractions in [0, 1], f_0 <= f, C >= 0
+  MaterialState overshot;
+  overshot.martensite = -0.1;
+  overshot.initial_martensite = 0.05;
+  overshot.bainite = 1.2;
+  overshot.carbon = -0.01;
+  model.make_admissible(overshot);
+  EXPECT_EQ(overshot.martensite, 0.);
+  EXPECT_EQ(overshot.initial_martensite, 0.);
+  EXPECT_EQ(overshot.bainite, 1.);
+  EXPECT_EQ(overshot.carbon, 0.);
+  overshot.martensite = 1.3;
+  model.make_admissible(overshot);
+  EXPECT_EQ(overshot.martensite, 1.);
+  EXPECT_EQ(overshot.bainite, 0.);
 }
 
 TEST(PhaseTransformationModel, FreeTransformationIsStressFreeAndTangentsMatch)

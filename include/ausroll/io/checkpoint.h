@@ -45,7 +45,7 @@ namespace ausroll::io
     std::map<std::string, std::string>         strings; ///< text entries (one line each)
 
     /** Version of the checkpoint layout; a checkpoint of another version is refused. */
-    static constexpr unsigned int format_version = 4;
+    static constexpr unsigned int format_version = 5;
 
     /**
      * Write to @p filename (call on one rank): a `format` line, the entries, and a `checksum`

@@ -91,7 +91,9 @@ namespace ausroll::io
     void locate(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &dof_handler);
 
     /** Write every probe for output number @p counter at pseudo-time @p time into @p directory
-        (@p small_strain: the model's kinematics, for the strain measure). */
+        (@p small_strain: the model's kinematics, for the strain measure; @p state_columns: also
+        the material points' temperature, martensite and bainite fractions and carbon content,
+        for thermal scenes). */
     void write(const std::string                           &directory,
                const unsigned int                           counter,
                const double                                 time,
@@ -99,7 +101,8 @@ namespace ausroll::io
                const dealii::DoFHandler<dim>               &dof_handler,
                const dealii::TrilinosWrappers::MPI::Vector &solution,
                const mechanics::MaterialPointStorage<dim>  &material_points,
-               const bool                                   small_strain) const;
+               const bool                                   small_strain,
+               const bool                                   state_columns = false) const;
 
     /** True if no probe is defined. */
     bool empty() const { return probes.empty(); }

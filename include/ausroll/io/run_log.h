@@ -70,13 +70,13 @@ namespace ausroll::io
   /** What the line of a converged step reports. */
   struct StepSummary
   {
-    unsigned int         step = 0;                ///< converged steps
-    double               time = 0.;               ///< pseudo-time reached
-    double               fraction = 0.;           ///< time / End time
-    double               start_fraction = 0.;     ///< fraction done before this process started
-    solver::NewtonResult result;                  ///< Newton statistics of the step
-    unsigned int         cutbacks = 0;            ///< cutbacks of the step
-    bool                 contact = false;         ///< the run has dies (stick/slip counts)
+    unsigned int         step = 0;            ///< converged steps
+    double               time = 0.;           ///< pseudo-time reached
+    double               fraction = 0.;       ///< share of the run done (StageParameters::progress)
+    double               start_fraction = 0.; ///< fraction done before this process started
+    solver::NewtonResult result;              ///< Newton statistics of the step
+    unsigned int         cutbacks = 0;        ///< cutbacks of the step
+    bool                 contact = false;     ///< the run has dies (stick/slip counts)
     unsigned int         n_stick = 0, n_slip = 0; ///< sticking / slipping contact nodes
     dealii::types::global_dof_index n_dofs = 0;   ///< DoFs
     double                          elapsed = 0.; ///< wall seconds since the start

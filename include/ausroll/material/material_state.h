@@ -43,7 +43,10 @@ namespace ausroll::material
    *   heating).
    * - @ref martensite, @ref carbon: martensite volume fraction (the rest is austenite) and carbon
    *   content in wt% (scenes with `Phases/Enabled`: PhaseTransformationModel; 0 otherwise);
-   *   @ref bainite: bainite volume fraction (with `Phases/Bainite start times`; 0 otherwise).
+   *   @ref bainite: bainite volume fraction (with `Phases/Bainite start times`; 0 otherwise);
+   *   @ref initial_martensite: the martensite fraction the point had at t = 0 (`Phases/Initial
+   *   state = quenched`: formed in the quench before the run, part of the stress-free reference;
+   *   0 otherwise): the transformation strain counts from it.
    */
   struct MaterialState
   {
@@ -59,12 +62,13 @@ namespace ausroll::material
     double martensite = 0.;             ///< martensite volume fraction (phases)
     double carbon = 0.;                 ///< carbon content, wt% (phases)
     double bainite = 0.;                ///< bainite volume fraction (phases)
+    double initial_martensite = 0.;     ///< martensite fraction at t = 0 (phases)
 
     /** The undeformed, stress-free state: F = b_e = I, everything else zero. */
     MaterialState();
 
     /** Number of doubles written by pack(). */
-    static constexpr unsigned int n_packed_values = 6 * 4 + 9 + 7;
+    static constexpr unsigned int n_packed_values = 6 * 4 + 9 + 8;
 
     /** Append the state to @p data as n_packed_values doubles (mesh transfer, checkpoints). */
     void pack(std::vector<double> &data) const;

@@ -7,8 +7,13 @@
 
 #include <ausroll/material/bainite_kinetics.h>
 #include <ausroll/material/carbon_function.h>
+#include <ausroll/material/material_point.h>
 #include <ausroll/material/transformation_plasticity.h>
 #include <ausroll/material/wrapped_model.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_point_data.h>
+#include <deal.II/grid/tria.h>
 
 #include <memory>
 #include <optional>
@@ -21,6 +26,11 @@ namespace ausroll::material
   struct PhaseParameters
   {
     bool enabled = false; ///< `Enabled`
+    /** `Initial state = quenched`: the points whose Ms(C) lies above the initial temperature
+        start with their Koistinen-Marburger martensite fraction (initialize_phase_state()). */
+    bool quenched = false;
+    /** `Initial state = undercooled austenite`: all austenite even below Ms(C) (no check). */
+    bool undercooled = false;
     /** `Carbon content` (wt%): an expression of x, y, z and depth, or `file: NAME.csv` of C
         against depth (material::CarbonProfile). */
     std::string carbon_content = "0.2";
@@ -120,6 +130,11 @@ namespace ausroll::material
 
     void rebase(MaterialState &state, const dealii::Tensor<2, 3> &F) const override;
 
+    /** After a polynomial mesh transfer: the phase fractions back into [0, 1] (the initial
+        martensite not above the martensite, martensite and bainite not above 1) and the carbon
+        content not negative, then the inner model's stress projection. */
+    void make_admissible(MaterialState &state) const override;
+
     /** The length of the step the next evaluations belong to (the bainite kinetics). */
     void set_step_length(const double dt) override
     {
@@ -147,8 +162,13 @@ namespace ausroll::material
                             const double T,
                             const double dt) const;
 
-    /** theta_tr of martensite fraction @p f and bainite fraction @p f_b at carbon @p C. */
-    double transformation_stretch(const double f, const double C, const double f_b = 0.) const;
+    /** theta_tr of martensite fraction @p f and bainite fraction @p f_b at carbon @p C, relative
+        to the stress-free reference that holds the martensite fraction @p f_0 (the quenched
+        initial state; 0: pure austenite). */
+    double transformation_stretch(const double f,
+                                  const double C,
+                                  const double f_b = 0.,
+                                  const double f_0 = 0.) const;
 
   private:
     BainiteKinetics               bainite;          ///< TTT kinetics (may be inactive)
@@ -166,4 +186,22 @@ namespace ausroll::material
     CarbonFunction ms; ///< Ms(C)
     CarbonFunction dv; ///< dV/V(C) in per cent
   };
+
+  /**
+   * The phase state at t = 0, from the carbon content and the temperature of every point's
+   * committed state (both set before): with `Initial state = quenched` the points whose Ms(C)
+   * lies above their temperature T_0 start with the Koistinen-Marburger fraction
+   * f_0 = 1 - exp(-b (Ms(C) - T_0)) as martensite and as initial_martensite (the stress-free
+   * reference: the transformation strain counts from it), the others as austenite; committed
+   * and trial alike. With `Initial state = austenite` a point below Ms(C) is an InputError
+   * naming Phases/Initial state (collective over @p comm: every rank throws the same);
+   * `undercooled austenite` leaves every point austenite without that check.
+   */
+  template <int dim>
+  void
+  initialize_phase_state(const PhaseParameters                  &parameters,
+                         const dealii::Triangulation<dim>       &triangulation,
+                         dealii::CellDataStorage<typename dealii::Triangulation<dim>::cell_iterator,
+                                                 MaterialPoint> &points,
+                         const MPI_Comm                          comm);
 } // namespace ausroll::material

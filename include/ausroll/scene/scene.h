@@ -146,10 +146,12 @@ namespace ausroll::scene
     /** Temperature at t = 0 on the field and the material points (not when resuming). */
     void initialize_temperature();
     /** `Phases/Carbon content` at the material points (material::CarbonProfile, its depth below
-        `Phases/Case boundaries`, by default the dies' Candidate boundaries), all austenite
-        (InputError outside 0 to 2.1 wt%); at set-up (before anything is written) and again after
-        the initial refinement cycles (not when resuming: the checkpoint holds it). */
-    void initialize_carbon();
+        `Phases/Case boundaries`, by default the dies' Candidate boundaries; InputError outside 0
+        to 2.1 wt%), the initial temperature, and the phases at t = 0 from both
+        (material::initialize_phase_state(): `Phases/Initial state`); at set-up (before anything
+        is written) and again after the initial refinement cycles (not when resuming: the
+        checkpoint holds them). */
+    void initialize_phases();
     /** Isothermal split, thermal half: the heat equation over the converged mechanical @p step
         (before the material points are committed), then the new temperature at the points. */
     void thermal_step(const solver::LoadStep &step);

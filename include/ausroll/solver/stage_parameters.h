@@ -63,6 +63,14 @@ namespace ausroll::solver
     /** Nominal step size of stage @p k: its `Step size` or @p loading_step. */
     double step_size(const unsigned int k, const double loading_step) const;
 
+    /**
+     * The share of the run done at time @p t, counted in nominal steps (each stage's duration
+     * over its step size), so that a long cooling stage of few steps does not look like most of
+     * the run (the run log's percentage and time estimate); without stages t / End time of
+     * @p loading.
+     */
+    double progress(const double t, const LoadingParameters &loading) const;
+
     static void declare_parameters(dealii::ParameterHandler &prm);
 
     /**

@@ -36,7 +36,8 @@ namespace ausroll::io::postprocess
                  input.dof_handler,
                  input.solution,
                  input.material_points,
-                 input.model.is_small_strain());
+                 input.model.is_small_strain(),
+                 input.thermal != nullptr);
   }
 
   template <int dim>
@@ -98,7 +99,8 @@ namespace ausroll::io::postprocess
                   input.dof_handler,
                   input.solution,
                   input.material_points,
-                  input.model.is_small_strain());
+                  input.model.is_small_strain(),
+                  input.thermal != nullptr);
   }
 
   template <int dim>

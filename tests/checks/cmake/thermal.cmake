@@ -18,11 +18,13 @@ ausroll_add_parallel_check(NAME gear_ausrolling_np2
 # of C and T, compressed: the reaction against the uniaxial closed form (1e-8); case trip_heat:
 # an insulated block transforming under a constant stress heated by the TRIP dissipation and the
 # latent heat (1e-8 of the rise); case stabilisation: a pre-strained block cooled through the Ms
-# lowered by the mechanical stabilisation (KM fraction, 1e-8). About 5 s.
+# lowered by the mechanical stabilisation (KM fraction, 1e-8); case quenched: Phases/Initial state
+# = quenched, a 0.2 wt% C block starting at 250 C below its Ms with the KM fraction in its
+# stress-free reference, cooled: fractions and free strain from it (1e-8). About 6 s.
 file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/thermal_trip)
 add_test(NAME check/thermal_trip
   COMMAND ${Python3_EXECUTABLE} ${AUSROLL_CHECKS_DIR}/check_thermal.py $<TARGET_FILE:ausroll>
-          ${CMAKE_SOURCE_DIR} trip mixture carbon_yield trip_heat stabilisation
+          ${CMAKE_SOURCE_DIR} trip mixture carbon_yield trip_heat stabilisation quenched
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/thermal_trip)
 set_tests_properties(check/thermal_trip PROPERTIES LABELS check TIMEOUT 900)
 
