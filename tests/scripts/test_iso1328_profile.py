@@ -12,13 +12,18 @@ The trace is linear between its points, so a sampled parabola differs from the p
 c h^2 / 8 (h the spacing): with 2000 points over L = 1.2 the quantities are within 1e-6 of c L^2.
 A straight trace is exact to round-off (1e-12) whatever the spacing and wherever the range ends
 cut a segment; uneven spacing must not tilt the mean line (length weighting).
+scripts/gear_flank_3d.py (iso_of_layer()) takes a layer's nodes by reference radius R: a trace
+linear in the roll length xi = sqrt(R^2 - r_b^2), sampled at radii and given the range as radii,
+must give the slope closed form above (1e-12).
 """
 
+import math
 import os
 import random
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+import gear_flank_3d  # noqa: E402
 import gear_flank_analysis as gfa  # noqa: E402
 
 failures = []
@@ -76,6 +81,13 @@ try:
     print("FAIL range outside the trace: no error")
 except ValueError as e:
     print(f"ok   range outside the trace: {e}")
+
+# 7. the 3D script's layer rows (Z, R, d_n): radii of the thesis gear (r_b 42.94 mm), a slope in xi
+rb = 42.9449
+radii = [math.hypot(rb, 2.5 + 2.2 * random.random()) for _ in range(40)] + [math.hypot(rb, 2.5)]
+layer = [(12.7, R, 1e-3 + s * (math.sqrt(R * R - rb * rb) - XI0)) for R in radii]
+R0, R1 = math.hypot(rb, XI0), math.hypot(rb, XI0 + L)
+check("3D layer rows by radius", gear_flank_3d.iso_of_layer(layer, rb, R0, R1), (4e-3, 0.0, 4e-3), 1e-12)
 
 print(f"{len(failures)} failure(s)" if failures else "all passed")
 sys.exit(1 if failures else 0)
