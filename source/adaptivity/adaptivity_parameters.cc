@@ -75,6 +75,20 @@ namespace ausroll::adaptivity
         "a die at level 1 instead of the finest level, so that the refined band does not grow with "
         "the rolled length. Must lie between Minimum level and Maximum level.");
     prm.declare_entry(
+        "Case level",
+        "-1",
+        Patterns::Integer(-1, 30),
+        "Cells with a material point whose carbon content exceeds Case carbon above (the "
+        "carburized case of Phases/Carbon content) are refined to this level and not coarsened "
+        "below it (-1: off), so that the case that transforms on cooling is resolved along the "
+        "whole outline, not only where a die touches. Works with every indicator; at most "
+        "Maximum level; needs Phases/Enabled.");
+    prm.declare_entry("Case carbon above",
+                      "0.2",
+                      Patterns::Double(0.),
+                      "Carbon content (wt%) above which a material point belongs to the case "
+                      "of Case level.");
+    prm.declare_entry(
         "Coarsening distance",
         "0",
         Patterns::Double(0.),
@@ -114,6 +128,8 @@ namespace ausroll::adaptivity
     min_cell_size = prm.get_double("Minimum cell size");
     keep_plastic_strain = prm.get_double("Keep plastic strain above");
     plastic_coarsening_level = prm.get_integer("Plastic coarsening level");
+    case_level = prm.get_integer("Case level");
+    case_carbon = prm.get_double("Case carbon above");
     coarsening_distance = prm.get_double("Coarsening distance");
     reequilibrate = prm.get_bool("Re-equilibrate");
     polynomial_transfer = prm.get("State transfer") == "polynomial";
@@ -136,6 +152,9 @@ namespace ausroll::adaptivity
                     && plastic_coarsening_level <= static_cast<int>(max_level)),
             "Adaptivity/Plastic coarsening level",
             "must lie between Minimum level and Maximum level (or be -1: off)");
+    require(case_level <= static_cast<int>(max_level),
+            "Adaptivity/Case level",
+            "must not exceed Maximum level");
     require(coarsening_distance == 0. || coarsening_distance >= contact_band,
             "Adaptivity/Coarsening distance",
             "must be 0 or at least Contact band (a coarsened cell would be refined again)");

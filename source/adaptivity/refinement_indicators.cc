@@ -81,6 +81,19 @@ namespace ausroll::adaptivity
               break;
             }
 
+    if (parameters.case_level >= 0)
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &point : material_points.get_data(cell))
+            if (point->committed.carbon > parameters.case_carbon)
+            {
+              const unsigned int k = cell->active_cell_index();
+              if (cell->level() < parameters.case_level)
+                refine[k] = true;
+              coarsen_floor[k] = std::max(coarsen_floor[k], parameters.case_level);
+              break;
+            }
+
     // Apply the flags with the limits.
     bool any = false;
     for (const auto &cell : triangulation.active_cell_iterators())

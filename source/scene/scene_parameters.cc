@@ -57,6 +57,9 @@ namespace ausroll::scene
       thermal.latent_heat_bainite = phases.bainite_latent_heat;
     }
     stages.parse_parameters(prm, loading, thermal);
+    require(adaptivity.case_level < 0 || phases.enabled,
+            "Adaptivity/Case level",
+            "refines the carbon case: set Phases/Enabled = true (and a Carbon content)");
     const std::string table_entry = material.first_temperature_dependent_entry();
     require(table_entry.empty() || thermal.enabled,
             table_entry,

@@ -42,11 +42,7 @@ namespace ausroll::scene
       geometry::require_off_axis(triangulation, "Model/Planar model = axisymmetric");
 
     // Loads and dies at a bounded number of times.
-    const solver::LoadingParameters &loading = parameters.loading;
-    const unsigned int               n_samples = std::min(loading.number_of_steps, 256u);
-    std::vector<double>              times;
-    for (unsigned int k = 0; k <= n_samples; ++k)
-      times.push_back(loading.end_time * k / n_samples);
+    const std::vector<double> times = parameters.stages.sample_times(parameters.loading, 256);
     boundary_conditions.check_values(triangulation, times);
     const auto box = dealii::GridTools::compute_bounding_box(triangulation);
     if (contact.active())

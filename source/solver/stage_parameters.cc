@@ -100,6 +100,33 @@ namespace ausroll::solver
     return done / total;
   }
 
+  std::vector<double> StageParameters::sample_times(const LoadingParameters &loading,
+                                                    const unsigned int       max_samples) const
+  {
+    std::vector<double> times{0.};
+    if (stages.empty())
+    {
+      const unsigned int n = std::min(loading.number_of_steps, max_samples);
+      for (unsigned int k = 1; k <= n; ++k)
+        times.push_back(loading.end_time * k / n);
+      return times;
+    }
+    const double loading_step = loading.end_time / loading.number_of_steps;
+    double       total = 0.;
+    for (unsigned int k = 0; k < stages.size(); ++k)
+      total += (stages[k].end_time - start_time(k)) / step_size(k, loading_step);
+    for (unsigned int k = 0; k < stages.size(); ++k)
+    {
+      const double length = stages[k].end_time - start_time(k);
+      const double steps = std::ceil(length / step_size(k, loading_step) - 1e-9);
+      const auto   n = static_cast<unsigned int>(
+          std::clamp(std::ceil(max_samples * steps / total), 2., std::max(steps, 1.)));
+      for (unsigned int i = 1; i <= n; ++i)
+        times.push_back(start_time(k) + length * i / n);
+    }
+    return times;
+  }
+
   void StageParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Stages");

@@ -38,6 +38,10 @@ namespace ausroll::adaptivity
         be coarsened, but not below this level, where every indicator allows coarsening (with the
         contact indicator: farther from the die than the coarsening distance). */
     int plastic_coarsening_level = -1;
+    /** `Case level` (-1: off): cells with a point whose carbon content exceeds `Case carbon
+        above` are refined to this level and not coarsened below it (the carburized case). */
+    int    case_level = -1;
+    double case_carbon = 0.2; ///< `Case carbon above` (wt%)
     /** `Coarsening distance` (mm; 0: twice `Contact band` plus the cell size): with the contact
         indicator, cells farther than this plus their size from a die may be coarsened. */
     double coarsening_distance = 0.;

@@ -71,6 +71,16 @@ namespace ausroll::solver
      */
     double progress(const double t, const LoadingParameters &loading) const;
 
+    /**
+     * At most about @p max_samples times from 0 to the End time of @p loading (both included) at
+     * which the set-up checks evaluate loads and die positions: evenly spaced without stages;
+     * with stages spread over the stages by their nominal steps, at least the stage's ends and
+     * one time inside each, so that a short stage of many steps (the feed of a die) is not
+     * skipped by a long one of few steps (the cooling).
+     */
+    std::vector<double> sample_times(const LoadingParameters &loading,
+                                     const unsigned int       max_samples) const;
+
     static void declare_parameters(dealii::ParameterHandler &prm);
 
     /**

@@ -31,7 +31,8 @@ set_tests_properties(check/thermal_trip PROPERTIES LABELS check TIMEOUT 900)
 # The carburized case: a free bar with a carbon gradient through its thickness (Phases/Carbon
 # content in the depth below one face) transforming to martensite on cooling, elastic: curvature,
 # mean strain and axial stress against the beam with an eigenstrain, 1 % (measured 0.26 %)
-# (tests/checks/check_carburized_bar.py). About 3 s wall.
+# (tests/checks/check_carburized_bar.py); again on 16 cells through the thickness with
+# Adaptivity/Case level = 2 refining the case (1 %, measured 0.26 %). About 7 s wall.
 ausroll_add_script_check(NAME carburized_bar SCRIPT ${AUSROLL_CHECKS_DIR}/check_carburized_bar.py)
 set_property(TEST check/carburized_bar APPEND PROPERTY LABELS quick)
 
