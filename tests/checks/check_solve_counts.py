@@ -68,6 +68,14 @@ def run(ausroll, source, base, name, overrides):
         timer = re.search(r"^\| " + section + r" +\| +(\d+) \|", out, re.MULTILINE)
         if timer:
             counts[key] = int(timer.group(1))
+    # the run's own breakdown of the Newton assemblies (NewtonSolver::assembly_count())
+    kinds = re.search(r"^assemblies: (\d+): (\d+) at the start of a solve .*?, (\d+) after a linear "
+                      r"solve .*?, (\d+) line-search trials .*?, (\d+) after status changes .*?; "
+                      r"(\d+) of all re-used", out, re.MULTILINE)
+    if kinds:
+        (counts["newton_assemblies"], counts["first"], counts["after_solve"],
+         counts["line_search"], counts["status_pass"], counts["reused"]) = (
+            int(g) for g in kinds.groups())
     rows = []
     history = os.path.join(name, "history.csv")
     if os.path.exists(history):
@@ -80,10 +88,24 @@ def run(ausroll, source, base, name, overrides):
 
 def check_counts(check, label, counts, bound_total, bound_solves, bound_assemblies):
     complete = all(k in counts for k in ("accepted", "steps", "discarded", "assemblies",
-                                         "linear_solves"))
+                                         "linear_solves", "newton_assemblies"))
     check(f"{label}: the run reports its solves and assemblies", complete)
     if not complete:
         return
+    # The breakdown accounts for every assembly of the timer but the initial one (the residual of
+    # the initial state, Scene::run()): the four kinds add up to the total, and the assemblies
+    # after a linear solve are the linear solves.
+    print(f"{label}: assemblies {counts['first']} at the start of a solve, "
+          f"{counts['after_solve']} after a linear solve, {counts['line_search']} line-search "
+          f"trials, {counts['status_pass']} after status changes ({counts['reused']} re-used "
+          f"the cell matrices)")
+    check(f"{label}: the four kinds of assemblies add up to the run's Newton assemblies",
+          counts["first"] + counts["after_solve"] + counts["line_search"] + counts["status_pass"]
+          == counts["newton_assemblies"])
+    check(f"{label}: the Newton assemblies are the timer's assemblies less the initial one",
+          counts["newton_assemblies"] + 1 == counts["assemblies"])
+    check(f"{label}: one assembly after each linear solve",
+          counts["after_solve"] == counts["linear_solves"])
     per_step = (counts["accepted"] + counts["discarded"]) / counts["steps"]
     per_solve = counts["assemblies"] / counts["linear_solves"]
     print(f"{label}: {counts['steps']} steps, {counts['accepted']} + {counts['discarded']} solves "
