@@ -11,8 +11,7 @@ namespace ausroll::contact
 
   void NestedActiveSet::begin_step(const ContactStatusSet::Vector &u, const double t_start)
   {
-    (void)u;
-    (void)t_start;
+    StatusStrategy::begin_step(u, t_start);
     // A node that closed in stick at the end of the last step is dragged by its stick point over
     // the first Newton pass of this one and, where the contact slides (the gear's flank), slips
     // at the first converged state with a tangential force far beyond the slip limit: the pass
