@@ -217,6 +217,17 @@ namespace ausroll::io
                       solve_count.discarded,
                       wall_seconds,
                       comm);
+    const solver::AssemblyCount &a = solve_count.assemblies;
+    if (a.total() > 0)
+    {
+      const auto cpu
+          = [&](const unsigned int k) { return " (" + format_seconds(a.cpu_seconds[k]) + " CPU)"; };
+      summary_log << "assemblies: " << a.total() << ": " << a.first << " at the start of a solve"
+                  << cpu(0) << ", " << a.after_solve << " after a linear solve" << cpu(1) << ", "
+                  << a.line_search << " line-search trials" << cpu(2) << ", " << a.status_pass
+                  << " after status changes" << cpu(3) << "; " << solve_count.reused_assemblies
+                  << " of all re-used the cell matrices of the same state" << std::endl;
+    }
     write_run_footer(summary_log, steps, wall_seconds, output.directory, output.write_vtu);
     if (output.verbosity != Verbosity::regression && output.verbosity != Verbosity::quiet)
       timer.print_summary();

@@ -379,6 +379,8 @@ namespace ausroll::scene
 
     stepper.run(*this, time, dt, step_number);
     write_output();
+    stepper.solve_count.assemblies = newton.assembly_count();
+    stepper.solve_count.reused_assemblies = system.assembly_cache.hits;
 
     io::write_run_end(parameters.output,
                       rank,

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <ctime>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -14,15 +15,51 @@ namespace ausroll::solver
   {
   }
 
+  AssemblyCount &AssemblyCount::operator+=(const AssemblyCount &other)
+  {
+    first += other.first;
+    after_solve += other.after_solve;
+    line_search += other.line_search;
+    status_pass += other.status_pass;
+    for (unsigned int k = 0; k < cpu_seconds.size(); ++k)
+      cpu_seconds[k] += other.cpu_seconds[k];
+    return *this;
+  }
+
+  namespace
+  {
+    /** CPU seconds of this process (all its threads). */
+    double process_cpu_seconds()
+    {
+      return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+    }
+  } // namespace
+
   NewtonResult NewtonSolver::solve(NonlinearProblem &problem, dealii::ConditionalOStream &log) const
   {
     NewtonResult result;
-    std::string  message;
+    // every return adds this solve's assemblies to the solver's totals
+    struct AddOnReturn
+    {
+      AssemblyCount       &total;
+      const AssemblyCount &mine;
+      ~AddOnReturn() { total += mine; }
+    } add_on_return{assemblies, result.assemblies};
+    std::string message;
+    // one assembly of kind k (AssemblyCount: first, after a solve, line-search trial, status pass)
+    const auto assemble = [&](const unsigned int k)
+    {
+      const double start = process_cpu_seconds();
+      const bool   ok = problem.assemble(true, message);
+      result.assemblies.cpu_seconds[k] += process_cpu_seconds() - start;
+      return ok;
+    };
     const double constraint_tolerance = 1e-10 * problem.length_scale();
     // debug tool (doc/scenes/hard_cases.md section 9): finite-difference check of the tangent
     static const bool tangent_check = std::getenv("AUSROLL_TANGENT_CHECK") != nullptr;
 
-    if (!problem.assemble(true, message))
+    ++result.assemblies.first;
+    if (!assemble(0))
     {
       result.reason = message;
       return result;
@@ -104,7 +141,8 @@ namespace ausroll::solver
           result.reason = msg.str();
           return result;
         }
-        if (!problem.assemble(true, message))
+        ++result.assemblies.status_pass;
+        if (!assemble(3))
         {
           result.reason = message;
           return result;
@@ -173,7 +211,8 @@ namespace ausroll::solver
       // (a step that imposes new prescribed displacements legitimately raises the residual).
       double step = 1.;
       problem.apply_increment(step);
-      bool admissible = problem.assemble(true, message);
+      ++result.assemblies.after_solve;
+      bool admissible = assemble(1);
       if (parameters.line_search && (constraints_ok || (nearly_met && it > pass_start)))
         for (unsigned int ls = 0; ls < 6; ++ls)
         {
@@ -188,7 +227,8 @@ namespace ausroll::solver
               << problem.increment_residual_product() / slope << std::endl;
           step *= 0.5;
           problem.apply_increment(step);
-          admissible = problem.assemble(true, message);
+          ++result.assemblies.line_search;
+          admissible = assemble(2);
         }
       else if (parameters.line_search)
         // New constraints (moved dies, prescribed displacements): the residual may rise, but an
@@ -199,7 +239,8 @@ namespace ausroll::solver
         {
           step *= 0.5;
           problem.apply_increment(step);
-          admissible = problem.assemble(true, message);
+          ++result.assemblies.line_search;
+          admissible = assemble(2);
         }
       if (step < 1.)
       {

@@ -17,6 +17,7 @@
  */
 #include <ausroll/contact/contact_strategy.h>
 #include <ausroll/contact/strategies/load_increment_ratio.h>
+#include <ausroll/contact/strategies/nested_active_set.h>
 #include <ausroll/solver/newton_solver.h>
 
 #include <deal.II/base/index_set.h>
@@ -118,6 +119,19 @@ namespace
       return 1;
     }
     void promote_statuses() override { committed_status = status; }
+    /** As ContactOperator: a node that closed in the last step and sticks slips, with the slip
+        sign of its tangential reaction (switch_status()). Unlike ContactOperator, R_t = 0 is
+        not excluded: on these linear springs a node sticks where its first free iterate put it,
+        so R_t = 0 at the end of the step in which it closes, and the slip sign of R_t >= 0 (+)
+        is that of the tangential loads of the problems below. */
+    unsigned int release_fresh_sticks() override
+    {
+      ++releases;
+      if (!closed_in_last_step || status != Status::stick || Rn <= 0. || changes >= max_changes)
+        return 0;
+      switch_status(Status::slip);
+      return 1;
+    }
     void reset() override
     {
       status = committed_status;
@@ -176,6 +190,7 @@ namespace
     }
     void commit()
     {
+      closed_in_last_step = committed_status == Status::open && status != Status::open;
       committed_status = status;
       committed_stick_point = stick_point;
       committed_sign = sign;
@@ -188,8 +203,9 @@ namespace
       changes = 0;
     }
 
-    Status status = Status::open;
-    double Rn = 0., Rt = 0.;
+    Status       status = Status::open;
+    double       Rn = 0., Rt = 0.;
+    unsigned int releases = 0; ///< calls of release_fresh_sticks()
 
   private:
     double slip_residual() const { return r_t + sign * p.mu * Rn; }
@@ -256,7 +272,7 @@ namespace
     double       stick_point = 0., slip_start = 0.;
     int          sign = 0;
     unsigned int changes = 0;
-    bool         fresh = false, hold_changed = false;
+    bool         fresh = false, hold_changed = false, closed_in_last_step = false;
     Status       committed_status = Status::open;
     double       committed_stick_point = 0., committed_slip_start = 0., committed_gap = 1.;
     int          committed_sign = 0;
@@ -277,7 +293,9 @@ namespace
   class StopScene : public solver::NonlinearProblem
   {
   public:
-    StopScene(const StopProblem &problem, const std::string &strategy)
+    StopScene(const StopProblem                                 &problem,
+              const std::string                                 &strategy,
+              std::shared_ptr<const contact::StrategyParameters> strategy_parameters = nullptr)
         : node(problem)
         , u(dealii::complete_index_set(2), MPI_COMM_SELF)
         , u_committed(u)
@@ -285,6 +303,7 @@ namespace
     {
       contact::ContactParameters parameters;
       parameters.strategy = strategy; // the registered defaults (Ratio tolerance 1e-3)
+      parameters.strategy_parameters = strategy_parameters;
       status_strategy = contact::make_status_strategy(parameters, node, true);
     }
 
@@ -465,6 +484,29 @@ namespace
                                                         {0.5, Status::stick, 0.6, 0., 0.4, 0.},
                                                         {0.75, Status::slip, 0.6, 0.3, 0.9, 0.45},
                                                         {1., Status::slip, 0.6, 0.8, 1.4, 0.7}};
+
+  // ---------------------------------------------------------------- problem 3: press and hold
+  // As press and slide, but the tangential load f_t = 0.5 (t - 1/2) stays below mu R_n
+  // (0.125 < 0.45 at t = 3/4, 0.25 < 0.7 at t = 1): the node sticks at u_t = 0 from t = 0.3 on.
+  StopProblem press_and_hold()
+  {
+    StopProblem p = press_and_slide();
+    p.f_t = [](const double t) { return t <= 0.5 ? 0. : 0.5 * (t - 0.5); };
+    return p;
+  }
+
+  const std::vector<Expected> press_and_hold_states = {{0.25, Status::open, 0.5, 0., 0., 0.},
+                                                       {0.5, Status::stick, 0.6, 0., 0.4, 0.},
+                                                       {0.75, Status::stick, 0.6, 0., 0.9, 0.125},
+                                                       {1., Status::stick, 0.6, 0., 1.4, 0.25}};
+
+  /** `Nested active set/Fresh sticks slip = true`. */
+  std::shared_ptr<const contact::StrategyParameters> fresh_sticks_slip()
+  {
+    auto parameters = std::make_shared<contact::NestedActiveSetParameters>();
+    parameters->fresh_sticks_slip = true;
+    return parameters;
+  }
 } // namespace
 
 // Active set: the node closes inside Newton when the free iterate passes the stop (step 2) and
@@ -505,6 +547,67 @@ TEST(ContactStrategy, NestedActiveSetPressAndSlide)
   const std::vector<Record> records = scene.run();
   expect_states(records, press_and_slide_states);
   expect_outer_passes(records, {0, 0, 1, 0});
+}
+
+// Fresh sticks slip: the node that closed in stick in step 2 starts step 3 slipping, which is
+// the converged status there: the same exact states as without the option, without the outer
+// pass of step 3 (the pass the option saves on the gear's flank). begin_step() asks for the
+// release once per step, and no more.
+TEST(ContactStrategy, NestedActiveSetFreshSticksSlipSavesThePass)
+{
+  StopScene                 scene(press_and_slide(), "nested active set", fresh_sticks_slip());
+  const std::vector<Record> records = scene.run();
+  expect_states(records, press_and_slide_states);
+  expect_outer_passes(records, {0, 0, 0, 0});
+  EXPECT_EQ(scene.node.releases, 4u);
+}
+
+// Fresh sticks slip where the node really sticks: released at the start of step 3, its slip
+// reverses (u_t would run back from its stick point) and it sticks again at the converged state,
+// where it stuck: the exact states, at the price of one outer pass. Without the option it sticks
+// throughout and is never released.
+TEST(ContactStrategy, NestedActiveSetFreshSticksSlipKeepsATrueStick)
+{
+  StopScene                 with(press_and_hold(), "nested active set", fresh_sticks_slip());
+  const std::vector<Record> records = with.run();
+  expect_states(records, press_and_hold_states);
+  expect_outer_passes(records, {0, 0, 1, 0});
+
+  StopScene                 without(press_and_hold(), "nested active set");
+  const std::vector<Record> plain = without.run();
+  expect_states(plain, press_and_hold_states);
+  expect_outer_passes(plain, {0, 0, 0, 0});
+  EXPECT_EQ(without.node.releases, 0u);
+}
+
+// After a failed solve: with the option the committed statuses are restored with the fresh
+// sticks released again (restart_step()), and release_after_failure() has nothing left to do
+// (the load stepper then retries only to drop the predictor); without it, restart_step() restores
+// the sticks and release_after_failure() releases them.
+TEST(ContactStrategy, NestedActiveSetFreshSticksSlipAfterAFailure)
+{
+  for (const bool option : {true, false})
+  {
+    SCOPED_TRACE(option ? "Fresh sticks slip" : "default");
+    StopNode node(press_and_slide());
+    // the node closed in the last step and sticks, pressed (R_n = 0.4)
+    dealii::TrilinosWrappers::MPI::Vector u(dealii::complete_index_set(2), MPI_COMM_SELF);
+    node.commit();
+    node.status = Status::stick;
+    node.Rn = 0.4;
+    node.commit();
+    contact::ContactParameters parameters;
+    parameters.strategy = "nested active set";
+    if (option)
+      parameters.strategy_parameters = fresh_sticks_slip();
+    const auto strategy = contact::make_status_strategy(parameters, node, true);
+    strategy->begin_step(u, 0.5);
+    EXPECT_EQ(node.status, option ? Status::slip : Status::stick);
+    strategy->restart_step();
+    EXPECT_EQ(node.status, option ? Status::slip : Status::stick);
+    EXPECT_EQ(strategy->release_after_failure(), option ? 0u : 1u);
+    EXPECT_EQ(node.status, Status::slip);
+  }
 }
 
 /** The load-increment ratio on @p problem: the states of the nominal steps @p nominal with the
@@ -587,4 +690,24 @@ TEST(ContactStrategy, RegisteredWithTheirSubsections)
   EXPECT_EQ(ratio->tolerance, 0.01);
   EXPECT_EQ(contact::ContactParameters::moved_entries().at("Contact/Ratio tolerance"),
             "`Contact/Load increment ratio/Ratio tolerance`");
+
+  // `Nested active set/Fresh sticks slip`: false unless set
+  for (const bool value : {false, true})
+  {
+    dealii::ParameterHandler nested;
+    contact::ContactParameters::declare_parameters(nested);
+    nested.parse_input_from_string(std::string("subsection Contact\n"
+                                               "  set Strategy = nested active set\n")
+                                   + (value ? "  subsection Nested active set\n"
+                                              "    set Fresh sticks slip = true\n"
+                                              "  end\n"
+                                            : "")
+                                   + "end\n");
+    contact::ContactParameters nested_parameters;
+    nested_parameters.parse_parameters(nested, "");
+    const auto *parsed = dynamic_cast<const contact::NestedActiveSetParameters *>(
+        nested_parameters.strategy_parameters.get());
+    ASSERT_NE(parsed, nullptr);
+    EXPECT_EQ(parsed->fresh_sticks_slip, value);
+  }
 }

@@ -149,6 +149,44 @@ TEST(NewtonSolver, ConstraintOpenedAtConvergedState)
   EXPECT_NEAR(problem.u, free_solution(10.), 1e-12);
 }
 
+// The assemblies of a solve by kind (AssemblyCount, the run's "assemblies:" summary line): the
+// problem counts its own assemble() calls. u^3 + u = 10 from u = 0 backtracks in its first
+// iteration (the full step u = 10 gives r = 1000, u = 5 still 120, u = 2.5 is accepted), then
+// closes on the stop g = 1.5 at the converged free state: one assembly at the start, one after
+// each linear solve, one after the status change, the rest are line-search trials; the solver's
+// totals add the solves up, CPU seconds included.
+TEST(NewtonSolver, AssemblyCountAccountsForEveryAssembly)
+{
+  dealii::ConditionalOStream log(std::cout, false);
+  const NewtonSolver         solver(parameters());
+  AssemblyCount              sum;
+  unsigned int               assemblies = 0;
+  for (const double g : {1.5, 100.})
+  {
+    StopProblem        problem(10., g, false);
+    const NewtonResult result = solver.solve(problem, log);
+    ASSERT_TRUE(result.converged) << result.reason;
+    const AssemblyCount &a = result.assemblies;
+    EXPECT_EQ(a.total(), problem.assemblies);
+    EXPECT_EQ(a.first, 1u);
+    EXPECT_EQ(a.after_solve, result.iterations);
+    EXPECT_EQ(a.status_pass, result.outer_passes);
+    EXPECT_GE(a.line_search, 2u); // u = 10 and u = 5 rejected
+    for (const double seconds : a.cpu_seconds)
+      EXPECT_GE(seconds, 0.);
+    sum += a;
+    assemblies += problem.assemblies;
+  }
+  const AssemblyCount &total = solver.assembly_count();
+  EXPECT_EQ(total.total(), assemblies);
+  EXPECT_EQ(total.first, sum.first);
+  EXPECT_EQ(total.after_solve, sum.after_solve);
+  EXPECT_EQ(total.line_search, sum.line_search);
+  EXPECT_EQ(total.status_pass, 1u); // the stop at 1.5 closes, the one at 100 is never reached
+  for (unsigned int k = 0; k < total.cpu_seconds.size(); ++k)
+    EXPECT_DOUBLE_EQ(total.cpu_seconds[k], sum.cpu_seconds[k]);
+}
+
 // Constraints that change at every converged state: the solver reports non-convergence after 30
 // passes instead of looping for ever (the load step is then cut back).
 TEST(NewtonSolver, CyclingConstraintsStopAfterThirtyPasses)

@@ -149,9 +149,13 @@ namespace ausroll::io
                          const MPI_Comm              comm);
 
   /**
-   * The end of a run of @p steps steps after @p wall_seconds: write_run_summary() and
-   * write_run_footer() (`Output/Verbosity` quiet, normal, verbose; rank @p rank), the timer
-   * table of @p timer (normal, verbose), "finished: N steps" on @p regression_log. Collective.
+   * The end of a run of @p steps steps after @p wall_seconds: write_run_summary(), the line
+   * "assemblies: T: F at the start of a solve (s CPU), A after a linear solve (s CPU), L
+   * line-search trials (s CPU), P after status changes (s CPU); R of all re-used the cell
+   * matrices of the same state" of @p solve_count (if it counted any; the counts and CPU seconds
+   * of rank 0), write_run_footer() (`Output/Verbosity` quiet, normal,
+   * verbose; rank @p rank), the timer table of @p timer (normal, verbose), "finished: N steps" on
+   * @p regression_log. Collective.
    */
   void write_run_end(const OutputParameters     &output,
                      const unsigned int          rank,

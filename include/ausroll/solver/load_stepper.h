@@ -50,6 +50,12 @@ namespace ausroll::solver
   {
     std::vector<unsigned int> per_step;      ///< solves of the accepted attempt of each step
     unsigned long long        discarded = 0; ///< solves of the discarded attempts
+    /** The assemblies of all Newton solves of the run (NewtonSolver::assembly_count(); the
+        owner of the solver fills it in before the summary) */
+    AssemblyCount assemblies;
+    /** Of these, the assemblies that re-used the cell matrices of an assembly at the same state
+        (mechanics::AssemblyCache hits: a re-assembly after status changes) */
+    unsigned long long reused_assemblies = 0;
 
     /** Sum of per_step. */
     unsigned long long accepted() const;

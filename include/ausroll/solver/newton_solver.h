@@ -9,6 +9,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
+#include <array>
 #include <string>
 
 namespace ausroll::solver
@@ -86,15 +87,34 @@ namespace ausroll::solver
     virtual void check_tangent(dealii::ConditionalOStream &log) { (void)log; }
   };
 
+  /**
+   * The assemblies (NonlinearProblem::assemble() calls) of Newton solves by what asked for them
+   * (issue 38, doc/studies/newton_economy.md): they add up to the calls of the timer's "assembly"
+   * section, except those of the `AUSROLL_TANGENT_CHECK` debug check.
+   */
+  struct AssemblyCount
+  {
+    unsigned long long first = 0;       ///< at the start of a solve (the step's first iterate)
+    unsigned long long after_solve = 0; ///< at the full step after each linear solve
+    unsigned long long line_search = 0; ///< at shortened steps (line-search trials, eta < 1)
+    unsigned long long status_pass = 0; ///< after status changes at a converged state (same u)
+    /** CPU seconds of the process in these four kinds of assemblies, in this order */
+    std::array<double, 4> cpu_seconds{{0., 0., 0., 0.}};
+
+    unsigned long long total() const { return first + after_solve + line_search + status_pass; }
+    AssemblyCount     &operator+=(const AssemblyCount &other);
+  };
+
   /** Outcome of one Newton solve. */
   struct NewtonResult
   {
-    bool         converged = false;     ///< equilibrium reached
-    unsigned int iterations = 0;        ///< Newton iterations (linear solves)
-    unsigned int outer_passes = 0;      ///< constraint updates at convergence (nested active set)
-    unsigned int linear_iterations = 0; ///< Krylov iterations summed over the step
-    double       residual = 0.;         ///< final residual norm
-    std::string  reason;                ///< why it failed
+    bool          converged = false;     ///< equilibrium reached
+    unsigned int  iterations = 0;        ///< Newton iterations (linear solves)
+    unsigned int  outer_passes = 0;      ///< constraint updates at convergence (nested active set)
+    unsigned int  linear_iterations = 0; ///< Krylov iterations summed over the step
+    double        residual = 0.;         ///< final residual norm
+    std::string   reason;                ///< why it failed
+    AssemblyCount assemblies;            ///< the assemblies of this solve
   };
 
   /**
@@ -121,7 +141,11 @@ namespace ausroll::solver
     /** Iterate @p problem to equilibrium; progress lines go to @p log (one per iteration). */
     NewtonResult solve(NonlinearProblem &problem, dealii::ConditionalOStream &log) const;
 
+    /** The assemblies of all solve() calls so far (converged or not). */
+    const AssemblyCount &assembly_count() const { return assemblies; }
+
   private:
-    SolverParameters parameters;
+    SolverParameters      parameters;
+    mutable AssemblyCount assemblies;
   };
 } // namespace ausroll::solver

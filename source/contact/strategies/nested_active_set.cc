@@ -2,10 +2,31 @@
 
 namespace ausroll::contact
 {
-  NestedActiveSet::NestedActiveSet(ContactStatusSet &nodes)
+  NestedActiveSet::NestedActiveSet(ContactStatusSet &nodes, const bool fresh_sticks_slip)
       : StatusStrategy(nodes)
+      , fresh_sticks_slip(fresh_sticks_slip)
   {
     nodes.hold_changed_nodes(true);
+  }
+
+  void NestedActiveSet::begin_step(const ContactStatusSet::Vector &u, const double t_start)
+  {
+    StatusStrategy::begin_step(u, t_start);
+    // A node that closed in stick at the end of the last step is dragged by its stick point over
+    // the first Newton pass of this one and, where the contact slides (the gear's flank), slips
+    // at the first converged state with a tangential force far beyond the slip limit: the pass
+    // that follows starts from a large residual and creeps (doc/studies/newton_economy.md,
+    // section 6). Slipping from the start, such a node sticks again at the first converged state
+    // if its slip reverses.
+    if (fresh_sticks_slip)
+      nodes.release_fresh_sticks();
+  }
+
+  void NestedActiveSet::restart_step()
+  {
+    StatusStrategy::restart_step();
+    if (fresh_sticks_slip)
+      nodes.release_fresh_sticks();
   }
 
   void NestedActiveSet::update_geometry(const ContactStatusSet::Vector &u)
@@ -44,19 +65,39 @@ namespace ausroll::contact
     // the whole Newton pass (its status is judged only at the converged state): near a gear tip
     // that drag inverts elements. Solved again with these nodes slipping, the converged state
     // judges them as any other (a reversed slip sticks again).
-    return nodes.release_fresh_sticks();
+    return fresh_sticks_slip ? 0 : nodes.release_fresh_sticks();
+  }
+
+  void NestedActiveSetParameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.declare_entry(
+        "Fresh sticks slip",
+        "false",
+        dealii::Patterns::Bool(),
+        "Every load step starts with the nodes that closed in stick in the last step slipping "
+        "(friction force of the sign of their last tangential reaction); a reversed slip sticks "
+        "again at the first converged state. false: they start sticking and slip only after a "
+        "converged pass (or when a failed attempt is solved again). See "
+        "doc/studies/newton_economy.md, section 6.");
+  }
+
+  void NestedActiveSetParameters::parse(dealii::ParameterHandler &prm,
+                                        const std::string &,
+                                        const std::string &)
+  {
+    fresh_sticks_slip = prm.get_bool("Fresh sticks slip");
   }
 
   std::unique_ptr<StatusStrategy> NestedActiveSetParameters::create(ContactStatusSet &nodes) const
   {
-    return std::make_unique<NestedActiveSet>(nodes);
+    return std::make_unique<NestedActiveSet>(nodes, fresh_sticks_slip);
   }
 } // namespace ausroll::contact
 
 AUSROLL_REGISTER_CONTACT_STRATEGY(
     ausroll::contact::NestedActiveSetParameters,
     "nested active set",
-    "",
+    "Nested active set",
     "penetrating nodes close at once, the other changes (opening, stick/slip) are decided at "
     "converged states and Newton continues until none changes (robust when many nodes change "
     "status per step, as in rolling with friction)")

@@ -1,6 +1,7 @@
 /**
  * @file nested_active_set.h
- * Contact strategy `nested active set` (no subsection): statuses judged at converged states.
+ * Contact strategy `nested active set` (subsection `Nested active set`): statuses judged at
+ * converged states.
  */
 #pragma once
 
@@ -20,21 +21,40 @@ namespace ausroll::contact
   class NestedActiveSet : public StatusStrategy
   {
   public:
-    explicit NestedActiveSet(ContactStatusSet &nodes);
+    /** With @p fresh_sticks_slip (`Fresh sticks slip`), every step starts with the nodes that
+        closed in stick in the last step slipping (begin_step()). */
+    explicit NestedActiveSet(ContactStatusSet &nodes, const bool fresh_sticks_slip = false);
+
+    /** `Fresh sticks slip`: the nodes that closed in the last step and stick slip instead
+        (ContactStatusSet::release_fresh_sticks()); a reversed slip sticks again at the first
+        converged state. Otherwise nothing. */
+    void begin_step(const ContactStatusSet::Vector &u, const double t_start) override;
+    /** The committed statuses, with `Fresh sticks slip` released again as in begin_step(). */
+    void restart_step() override;
 
     void         update_geometry(const ContactStatusSet::Vector &u) override;
     unsigned int update_at_convergence(const ContactStatusSet::Vector &u,
                                        dealii::ConditionalOStream     &log) override;
     bool         backtrack_with_small_constraint_gaps() const override;
     /** Nodes that closed in the last step and stick slip instead
-        (ContactStatusSet::release_fresh_sticks()). */
+        (ContactStatusSet::release_fresh_sticks()); none with `Fresh sticks slip` (released from
+        the start of the step). */
     unsigned int release_after_failure() override;
+
+  private:
+    const bool fresh_sticks_slip;
   };
 
-  /** Parameters of `nested active set`: none. */
+  /** Parameters of `nested active set` (subsection `Nested active set`). */
   struct NestedActiveSetParameters : public StrategyParameters
   {
-    static void                     declare_parameters(dealii::ParameterHandler &) {}
+    bool fresh_sticks_slip = false; ///< `Fresh sticks slip`
+
+    /** Declare `Fresh sticks slip` (the caller has entered the subsection). */
+    static void                     declare_parameters(dealii::ParameterHandler &prm);
+    void                            parse(dealii::ParameterHandler &prm,
+                                          const std::string        &path,
+                                          const std::string        &input_directory) override;
     std::unique_ptr<StatusStrategy> create(ContactStatusSet &nodes) const override;
   };
 } // namespace ausroll::contact
