@@ -10,8 +10,8 @@
 #    part of the rolled layer lies, is refined too; level 2 is the shipped scene): the ISO 1328
 #    profile quantities F_alpha, f_f_alpha, f_H_alpha, d_n, and the residual stress profiles of
 #    the depth probes at the pitch point and in the root of the rolled flank.
-#  gear_ausrolling_finished (prm/gear_ausrolling_finished.prm, the chain to the finished gear): the
-#    ISO 1328 quantities of the finished flank, the residual hoop stress 0.2 mm below the pitch
+#  gear_ausrolling_finished (prm/gear_ausrolling_finished.prm, the chain to the finished gear; levels
+#    of Adaptivity/Case level, 3 shipped): the ISO 1328 quantities of the finished flank, the residual hoop stress 0.2 mm below the pitch
 #    point and the root, the martensite 0.05 mm below the pitch point, the peak die force;
 #    gear_ausrolling_finished_bulk: the same on the whole-mesh sequence of gear_rolling_bulk.
 #  disk_rolling (prm/disk_rolling_quick.prm): the 15 degree ring refined to 15 / 2^level degrees
@@ -74,9 +74,12 @@ case "$SCENE" in
   gear_ausrolling_finished)
     # the whole chain (rolling in the bath, cooling with the transformation): the finished flank
     # of the last output against the involute scaled by the body's free strain at 20 C (0.99733,
-    # prm/gear_ausrolling_finished.prm); n = rolling steps, the cooling steps scale with them
+    # prm/gear_ausrolling_finished.prm); levels: Adaptivity/Case level (the carburized case along
+    # the whole outline; 2 = no refinement beyond the tooth's, 3 = shipped); n = rolling steps, the
+    # cooling steps scale with them
     PRM=prm/gear_ausrolling_finished.prm
-    DEFAULTS=("3 4 5" "120 240 480" 5)
+    DEFAULTS=("2 3 4" "120 240 480" 3)
+    LEVEL_SETS=(--level-set "Adaptivity/Case level = {level}")
     SCENE_OPTIONS=(
       --set "Output/Write VTU = true"
       --step-set "Stages/Stage 0/Step size = {0.12 / n}"

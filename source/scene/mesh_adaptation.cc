@@ -3,7 +3,8 @@
  * The members of Scene that follow a change of the mesh or of the DoFs (as ASPECT keeps
  * Simulator's mesh refinement apart from its core): the parts set up on the DoFs, and the
  * adaptation of the mesh (marking by the registered refinement indicators, the transfer of
- * displacement, material points, temperature and contact statuses, the re-equilibration).
+ * displacement, material points, temperature and contact statuses, the re-equilibration), and
+ * the check of the mesh's distortion after every step.
  */
 #include <ausroll/adaptivity/refinement_indicators.h>
 #include <ausroll/core/exceptions.h>
@@ -95,8 +96,32 @@ namespace ausroll::scene
     return true;
   }
 
+  template <int dim>
+  void Scene<dim>::check_distortion()
+  {
+    if (!distortion.check(system.mapping,
+                          system.dof_handler,
+                          assembler->quadrature(),
+                          kinematics,
+                          system.solution_ghosted,
+                          step_number,
+                          time,
+                          newton_log))
+      return;
+    log << "  warning: " << distortion.warning() << std::endl;
+    if (parameters.loading.stop_at_distortion)
+    {
+      write_output();
+      throw RunFailure(distortion.warning() + " (Loading/Stop at distorted mesh = true). The "
+                       + "state of step " + std::to_string(step_number) + " is in "
+                       + parameters.output.directory + "/");
+    }
+  }
+
   template void Scene<2>::setup_dof_dependents();
   template bool Scene<2>::adapt_mesh(const double);
+  template void Scene<2>::check_distortion();
   template void Scene<3>::setup_dof_dependents();
   template bool Scene<3>::adapt_mesh(const double);
+  template void Scene<3>::check_distortion();
 } // namespace ausroll::scene

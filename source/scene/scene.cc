@@ -196,28 +196,6 @@ namespace ausroll::scene
   }
 
   template <int dim>
-  void Scene<dim>::check_distortion()
-  {
-    if (!distortion.check(system.mapping,
-                          system.dof_handler,
-                          assembler->quadrature(),
-                          kinematics,
-                          system.solution_ghosted,
-                          step_number,
-                          time,
-                          newton_log))
-      return;
-    log << "  warning: " << distortion.warning() << std::endl;
-    if (parameters.loading.stop_at_distortion)
-    {
-      write_output();
-      throw RunFailure(distortion.warning() + " (Loading/Stop at distorted mesh = true). The "
-                       + "state of step " + std::to_string(step_number) + " is in "
-                       + parameters.output.directory + "/");
-    }
-  }
-
-  template <int dim>
   bool Scene<dim>::add_penetrating_boundaries()
   {
     if (!contact.active() || !parameters.contact.add_penetrating_boundaries)
