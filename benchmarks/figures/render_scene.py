@@ -32,6 +32,7 @@ Options:
   --edges             draw the mesh edges on the workpiece
   --size WxH          picture size in pixels (default 1200x800)
   --title TEXT        text in the upper left corner (default: scene name and time)
+A vector that starts with a minus sign needs the '=' form: --focus=-14,36,0.
 
 Examples (doc/manual.md, "Pictures with pvpython"):
     xvfb-run -a pvpython benchmarks/figures/render_scene.py output/gear_rolling_3d g.png \\
