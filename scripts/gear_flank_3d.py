@@ -168,7 +168,7 @@ def main():
                          label=f"z = {z:.2f}" if i in (0, len(zs) - 1) or len(zs) <= 6 else None)
         if args.compare_2d:
             axes[0].plot([R for R, _ in ref], [1000 * d for _, d in ref], "k--", lw=1,
-                         label="2D plane strain")
+                         label="2D run (--compare-2d)")
         axes[0].axvline(rp, color="gray", ls=":", lw=1)
         axes[0].set_xlabel("reference radius R (mm); dotted: pitch circle")
         axes[0].set_ylabel("normal deviation d_n (um)")

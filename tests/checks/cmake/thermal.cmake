@@ -46,9 +46,10 @@ set_tests_properties(check/stages PROPERTIES PROCESSORS 2)
 # The 3D process chain (tests/checks/check_gear_chain_3d.py on scenes/gear_chain_3d_free.prm):
 # the extruded gear tooth of prm/gear_ausrolling_chain_3d.prm with stages, the temperature field,
 # martensite, TRIP and the mixture yield stress, cooled uniformly from 250 C to 20 C through Ms
-# with the inner arc moving with the body's free strain: stress-free (1e-3 MPa) and every node at
-# lambda X, lambda = (1 + alpha dT) (1 + f dV)^(1/3) with the Koistinen-Marburger fraction
-# (2e-7 mm in the VTU, 1e-9 mm at the monitored tooth tip, f to 1e-8); on 2 ranks the same history
-# (1e-8). About 6 s.
+# with the inner arc moving with the body's free strain, all austenite (0.5 wt% C) and quenched
+# (0.1 wt% C, Phases/Initial state): stress-free (1e-3 MPa) and every node at lambda X,
+# lambda = (1 + alpha dT) ((1 + f dV) / (1 + f0 dV))^(1/3) with the Koistinen-Marburger fraction
+# (2e-7 mm in the VTU, 1e-9 mm at the monitored tooth tip, f to 1e-8); the quenched case on 2
+# ranks: the same history (1e-8). About 5 s.
 ausroll_add_script_check(NAME gear_chain_3d SCRIPT ${AUSROLL_CHECKS_DIR}/check_gear_chain_3d.py)
 set_tests_properties(check/gear_chain_3d PROPERTIES PROCESSORS 2)
