@@ -105,7 +105,9 @@ namespace ausroll::adaptivity
     prm.declare_entry("Re-equilibrate",
                       "true",
                       Patterns::Bool(),
-                      "Solve for equilibrium on the new mesh before the next step (recommended).");
+                      "Solve for equilibrium on the new mesh before the next step (recommended; "
+                      "if that fails, a warning, and the next step starts from the transferred "
+                      "state as without it).");
     prm.leave_subsection();
   }
 

@@ -88,10 +88,17 @@ namespace ausroll::scene
     {
       // Equilibrium on the new mesh at the same time (no load change).
       const solver::NewtonResult result = newton.solve(*equilibrium, newton_log);
-      if (!result.converged)
-        throw RunFailure("re-equilibration after mesh adaptation at t = " + std::to_string(time)
-                         + " failed: " + result.reason);
-      commit_step(false); // the predictor's u_n-1 stays the last step's converged state
+      if (result.converged)
+        commit_step(false); // the predictor's u_n-1 stays the last step's converged state
+      else
+      {
+        // as with Re-equilibrate = false: the next step starts from the transferred state and
+        // its Newton (with its cutbacks) removes the imbalance together with the step's load
+        system.restore_step_start();
+        contact.update_geometry(system.solution_ghosted, false);
+        log << "  warning: re-equilibration after mesh adaptation at t = " << time << " failed ("
+            << result.reason << "); the next step starts from the transferred state" << std::endl;
+      }
     }
     return true;
   }
