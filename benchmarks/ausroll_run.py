@@ -25,6 +25,11 @@ SERIAL_ENV = dict(os.environ, DEAL_II_NUM_THREADS="1", OMP_NUM_THREADS="1",
                   OPENBLAS_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1",
                   OMPI_MCA_mpi_yield_when_idle="1")
+# a single rank without the yield: the singleton still calls sched_yield() in its MPI progress
+# loop, and on a loaded machine every yield gives the rest of the time slice away (the 3D disk
+# level-0 run of benchmarks/convergence/convergence.sh, 2 steps, 2026-12-07, load 14 on 2 cores:
+# 1.0 s CPU in 46 s wall with the yield, 0.9 s CPU in 6.8 s wall without)
+ONE_RANK_ENV = {k: v for k, v in SERIAL_ENV.items() if k != "OMPI_MCA_mpi_yield_when_idle"}
 
 LINEAR_LINE = re.compile(r"linear solve: (\d+) iterations, ([0-9.]+) s wall, ([0-9.]+) s CPU")
 
@@ -73,7 +78,8 @@ def run_variant(ausroll, base_prm, work, name, overrides, np=1, reuse=False, tim
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.time()
     try:
-        result = subprocess.run(command, capture_output=True, text=True, env=SERIAL_ENV,
+        result = subprocess.run(command, capture_output=True, text=True,
+                                env=SERIAL_ENV if np > 1 else ONE_RANK_ENV,
                                 timeout=timeout)
         rc, log = result.returncode, result.stdout + result.stderr
     except subprocess.TimeoutExpired as e:

@@ -11,16 +11,21 @@
 #    profile quantities F_alpha, f_f_alpha, f_H_alpha, d_n, and the residual stress profiles of
 #    the depth probes at the pitch point and in the root of the rolled flank.
 #  gear_ausrolling_finished (prm/gear_ausrolling_finished.prm, the chain to the finished gear; levels
-#    of Adaptivity/Case level, 3 shipped): the ISO 1328 quantities of the finished flank, the residual hoop stress 0.2 mm below the pitch
-#    point and the root, the martensite 0.05 mm below the pitch point, the peak die force;
+#    of Adaptivity/Case level, 3 shipped): the ISO 1328 quantities of the finished flank, the
+#    residual hoop stress 0.2 mm below the pitch point and the root, the martensite 0.05 mm below the pitch point, the peak die force;
 #    gear_ausrolling_finished_bulk: the same on the whole-mesh sequence of gear_rolling_bulk.
 #  disk_rolling (prm/disk_rolling_quick.prm): the 15 degree ring refined to 15 / 2^level degrees
 #    in the 12 mm band, radially likewise; steps = rolling steps per revolution (Coulomb mu = 0.3); mean
 #    die force over 60-300 degrees of revolution, residual lobe (max) and trough (min) of the rim,
 #    and the residual rim in the max-norm on the common angle grid.
+#  disk_rolling_3d_round, disk_rolling_3d_flat (prm/disk_rolling_3d_round_adaptive.prm, for the flat die with
+#    the cylinder of prm/disk_rolling_3d_flat.prm): levels of the contact band that follows the die,
+#    feed and 15 degrees of rolling; force per mm while rolling, depth, lateral spread and spread over
+#    depth (doc/scenes/disk_rolling_3d.md). Runs under ulimit -v 12000000.
 # Usage: benchmarks/convergence/convergence.sh SCENE [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [more convergence_study.py options]
 #   SCENE: gear_rolling (defaults: levels "2 3 4 5", steps "60 120 240 480", step level 4) or
 #          disk_rolling (defaults: levels "1 2 3", steps "144 288 576", step level 2)
+#          disk_rolling_3d_round / disk_rolling_3d_flat (defaults: levels "0 1 2 3", no step sequence)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 SCENE="${1:-}"
@@ -130,8 +135,42 @@ case "$SCENE" in
       --profile "trough=profile_*.csv:angle:radial_displacement:min"
       --profile "rim=profile_*.csv:angle:radial_displacement")
     PLOT=disk_work_precision.png ;;
+  disk_rolling_3d_round|disk_rolling_3d_flat)
+    # 3D disk (doc/scenes/disk_rolling_3d.md): the coarse 24 x 2 x 2 Q2 section refined to
+    # Maximum level = level in the 2 mm contact band that follows the die (level 0: no refinement);
+    # feed 0.762 mm in 4 steps, then 15 degrees of rolling in 1.25 degree steps (90 and 95 degrees,
+    # where the depth and spread are read, lie 10-15 degrees behind the die at the end); no
+    # unloading. Force per mm of thickness 2 |F_half| / 25.4 mm averaged over 7.5-15 degrees (7.5
+    # degrees: a whole number of Q2 node spacings on the rim at every level, 7.5 / 2^level, over
+    # which the force oscillates as the contact passes the nodes); depth -u_r at mid-thickness and spread u_z of the side-face edge
+    # (z = 12.7 mm), means of the monitor points at 90 and 95 degrees, under load (last step).
+    ulimit -v 12000000 # 3D: a run that runs away must not exhaust the shared machine's memory
+    DIE="${SCENE#disk_rolling_3d_}"
+    PRM=prm/disk_rolling_3d_round_adaptive.prm
+    DEFAULTS=("0 1 2 3" "" 0)
+    SCENE_OPTIONS=(
+      --set "Loading/End time = 16" --set "Loading/Number of steps = 16"
+      --set "Contact/Die 0/Motion/Rolling/Revolution angle = t <= 4 ? 0 : 1.25 * (t - 4)"
+      --set "Contact/Die 0/Motion/Rolling/Feed = t <= 4 ? 0.762 * t / 4 : 0.762"
+      --set "Adaptivity/Plastic coarsening level = -1"
+      --set "Output/Write VTU = true" --set "Output/Interval = 0"
+      --time-column die_roll_revolution
+      --history "F_per_mm=mean(7.5,15):2 * die_roll_force_magnitude / 25.4"
+      --history "depth=last:-(mid90_uy + mid95_ux * cos(radians(95)) + mid95_uy * sin(radians(95))) / 2"
+      --history "spread=last:(side90_uz + side95_uz) / 2"
+      --history "spread_over_depth=last:(side90_uz + side95_uz) / max(1e-12, -(mid90_uy + mid95_ux * cos(radians(95)) + mid95_uy * sin(radians(95))))")
+    if [ "$DIE" = flat ]; then
+      # the flat-faced die of prm/disk_rolling_3d_flat.prm on the same adaptive section
+      SCENE_OPTIONS+=(
+        --set "Contact/Die 0/Shape = cylinder"
+        --set "Contact/Die 0/Cylinder/Center = 0, 0, 0" --set "Contact/Die 0/Cylinder/Axis = 0, 0, 1"
+        --set "Contact/Die 0/Cylinder/Radius = 116.55" --set "Contact/Die 0/Cylinder/Width = 31.4"
+        --set "Contact/Die 0/Cylinder/Edge radius = 1.5"
+        --set "Contact/Die 0/Motion/Rolling/Die rolling radius = 116.55")
+    fi
+    PLOT=${SCENE}_work_precision.png ;;
   *)
-    echo "usage: $0 gear_rolling|gear_rolling_bulk|gear_ausrolling|gear_ausrolling_finished[_bulk]|disk_rolling [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [options]" >&2
+    echo "usage: $0 gear_rolling|gear_rolling_bulk|gear_ausrolling|gear_ausrolling_finished[_bulk]|disk_rolling|disk_rolling_3d_round|disk_rolling_3d_flat [AUSROLL] [WORK] [LEVELS] [STEPS] [STEP_LEVEL] [options]" >&2
     exit 1 ;;
 esac
 shift
