@@ -119,8 +119,9 @@ namespace ausroll::solver
     {
       const double length = stages[k].end_time - start_time(k);
       const double steps = std::ceil(length / step_size(k, loading_step) - 1e-9);
-      const auto   n = static_cast<unsigned int>(
-          std::clamp(std::ceil(max_samples * steps / total), 2., std::max(steps, 1.)));
+      // at least two samples in a stage of two or more steps, at most one per step
+      const double wanted = std::max(2., std::ceil(max_samples * steps / total));
+      const auto   n = static_cast<unsigned int>(std::max(1., std::min(wanted, steps)));
       for (unsigned int i = 1; i <= n; ++i)
         times.push_back(start_time(k) + length * i / n);
     }

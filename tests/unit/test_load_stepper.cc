@@ -492,6 +492,31 @@ TEST(LoadStepper, StagesEndStepsAndSetTheirStepSize)
     EXPECT_NE(staged.logs.text.str().find(line), std::string::npos) << staged.logs.text.str();
 }
 
+// The run's progress counts nominal steps (3 + 0.5 + 2.67 of 6.17 in three_stages()), and the
+// set-up checks sample every stage: a stage of one step by its end, the others at most once per
+// step and at least twice; without stages the old even grid.
+TEST(LoadStepper, StagesProgressAndSampleTimes)
+{
+  const StageParameters stages = three_stages();
+  const double          total = 3. + 0.125 / 0.25 + 0.5 / 0.1875;
+  EXPECT_NEAR(stages.progress(0.375, loading()), 3. / total, 1e-14);
+  EXPECT_NEAR(stages.progress(0.4375, loading()), 3.25 / total, 1e-14);
+  EXPECT_NEAR(stages.progress(1., loading()), 1., 1e-14);
+  const std::vector<double> few = stages.sample_times(loading(), 4);
+  // quench: 2 (4 * 3 / 6.17 -> 2), hold: 1 (a single step), cooling: 2
+  const std::vector<double> expected{0., 0.1875, 0.375, 0.5, 0.75, 1.};
+  ASSERT_EQ(few.size(), expected.size());
+  for (unsigned int i = 0; i < expected.size(); ++i)
+    EXPECT_NEAR(few[i], expected[i], 1e-14) << i;
+  const std::vector<double> many = stages.sample_times(loading(), 256);
+  EXPECT_EQ(many.size(), 1u + 3u + 1u + 3u); // at most one per step: 3, 1, ceil(2.67) = 3
+  const StageParameters     none;
+  const std::vector<double> even = none.sample_times(loading(), 256);
+  EXPECT_EQ(even.size(), loading().number_of_steps + 1);
+  EXPECT_EQ(even.back(), loading().end_time);
+  EXPECT_NEAR(none.progress(0.25, loading()), 0.25 / loading().end_time, 1e-15);
+}
+
 // After a cutback inside a stage the step-size control works within the stage's nominal step
 // (growth back to 0.1875, not to Loading's 0.25), and the next stage starts with its own step.
 TEST(LoadStepper, StagesBoundTheStepSizeControl)
