@@ -31,6 +31,19 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 SCENE="${1:-}"
 LEVEL_SETS=(--level-set "Adaptivity/Maximum level = {level}"
   --level-set "Adaptivity/Initial refinement cycles = {level}")
+# the finished-flank quantities of both gear_ausrolling_finished sequences
+FINISHED_QUANTITIES=(
+  --history "F_peak=max:hypot(die_die_force_x, die_die_force_y)"
+  --history "martensite_mean=last:martensite_mean"
+  --after "/usr/bin/python3 $ROOT/benchmarks/gear_rolling/gear_quantities.py {out} --scale 0.9973324"
+  --value "d_n_min=d_n_min" --value "F_alpha=F_alpha" --value "f_f_alpha=f_f_alpha"
+  --value "f_H_alpha=f_H_alpha"
+  --profile "d_n=residual_dn.csv:R:d_n"
+  --profile "s_tt_pitch_0.2=depth_pitch_right_*.csv:s:stress_tt:at(0.2)"
+  --profile "s_tt_pitch_min=depth_pitch_right_*.csv:s:stress_tt:min"
+  --profile "s_tt_root_0.2=depth_root_right_*.csv:s:stress_tt:at(0.2)"
+  --profile "f_M_pitch_0.05=depth_pitch_right_*.csv:s:martensite:at(0.05)"
+)
 case "$SCENE" in
   gear_rolling)
     PRM=prm/gear_rolling.prm
@@ -90,16 +103,7 @@ case "$SCENE" in
       --step-set "Stages/Stage 0/Step size = {0.12 / n}"
       --step-set "Stages/Stage 1/Step size = {960 / n}"
       --step-set "Loading/Number of steps = {1001 * n}"
-      --history "F_peak=max:hypot(die_die_force_x, die_die_force_y)"
-      --history "martensite_mean=last:martensite_mean"
-      --after "/usr/bin/python3 $ROOT/benchmarks/gear_rolling/gear_quantities.py {out} --scale 0.9973324"
-      --value "d_n_min=d_n_min" --value "F_alpha=F_alpha" --value "f_f_alpha=f_f_alpha"
-      --value "f_H_alpha=f_H_alpha"
-      --profile "d_n=residual_dn.csv:R:d_n"
-      --profile "s_tt_pitch_0.2=depth_pitch_right_*.csv:s:stress_tt:at(0.2)"
-      --profile "s_tt_pitch_min=depth_pitch_right_*.csv:s:stress_tt:min"
-      --profile "s_tt_root_0.2=depth_root_right_*.csv:s:stress_tt:at(0.2)"
-      --profile "f_M_pitch_0.05=depth_pitch_right_*.csv:s:martensite:at(0.05)")
+      "${FINISHED_QUANTITIES[@]}")
     PLOT=gear_ausrolling_finished_work_precision.png ;;
   gear_ausrolling_finished_bulk)
     # the same quantities on the whole-mesh sequence of gear_rolling_bulk (the case below the
@@ -111,16 +115,7 @@ case "$SCENE" in
       --level-set "Adaptivity/Maximum level = {level + 3}")
     SCENE_OPTIONS=(
       --set "Output/Write VTU = true"
-      --history "F_peak=max:hypot(die_die_force_x, die_die_force_y)"
-      --history "martensite_mean=last:martensite_mean"
-      --after "/usr/bin/python3 $ROOT/benchmarks/gear_rolling/gear_quantities.py {out} --scale 0.9973324"
-      --value "d_n_min=d_n_min" --value "F_alpha=F_alpha" --value "f_f_alpha=f_f_alpha"
-      --value "f_H_alpha=f_H_alpha"
-      --profile "d_n=residual_dn.csv:R:d_n"
-      --profile "s_tt_pitch_0.2=depth_pitch_right_*.csv:s:stress_tt:at(0.2)"
-      --profile "s_tt_pitch_min=depth_pitch_right_*.csv:s:stress_tt:min"
-      --profile "s_tt_root_0.2=depth_root_right_*.csv:s:stress_tt:at(0.2)"
-      --profile "f_M_pitch_0.05=depth_pitch_right_*.csv:s:martensite:at(0.05)")
+      "${FINISHED_QUANTITIES[@]}")
     PLOT=gear_ausrolling_finished_bulk_work_precision.png ;;
   disk_rolling)
     PRM=prm/disk_rolling_quick.prm

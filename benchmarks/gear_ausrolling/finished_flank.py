@@ -29,6 +29,7 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import gear_flank_analysis as gfa  # noqa: E402
+from convergence_study import interpolate  # noqa: E402
 
 
 def iso_at(args, scale, time):
@@ -64,12 +65,7 @@ def depth_profile(directory, name, time):
 
 
 def at_depth(rows, column, s):
-    xs = [float(r["s"]) for r in rows]
-    ys = [float(r[column]) for r in rows]
-    for (xa, ya), (xb, yb) in zip(zip(xs, ys), zip(xs[1:], ys[1:])):
-        if xa <= s <= xb:
-            return ya if xb == xa else ya + (yb - ya) * (s - xa) / (xb - xa)
-    return ys[-1]
+    return interpolate([float(r["s"]) for r in rows], [float(r[column]) for r in rows], s)
 
 
 def main():

@@ -11,24 +11,25 @@ cell, point fields interpolated), optionally only the window [X0, X1] x [Y0, Y1]
 
 import argparse
 import os
-import xml.etree.ElementTree as ET
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
-from vtkmodules.vtkIOXML import vtkXMLPUnstructuredGridReader  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
+                                "scripts"))
+import vtu_io  # noqa: E402
 
 LABELS = {"carbon_content": "carbon (wt%)", "martensite_fraction": "martensite fraction",
           "von_mises_stress": "von Mises stress (MPa)", "temperature": "temperature (C)"}
 
 
 def step_file(directory, time):
-    root = ET.parse(os.path.join(directory, "solution.pvd")).getroot()
-    sets = [(float(d.get("timestep")), d.get("file")) for d in root.iter("DataSet")]
-    t, name = sets[-1] if time is None else min(sets, key=lambda s: abs(s[0] - time))
-    return t, os.path.join(directory, name)
+    sets = vtu_io.datasets(directory)
+    return sets[-1] if time is None else min(sets, key=lambda s: abs(s[0] - time))
 
 
 def main():
@@ -40,10 +41,7 @@ def main():
     p.add_argument("--window", type=float, nargs=4)
     args = p.parse_args()
     t, path = step_file(args.directory, args.time)
-    reader = vtkXMLPUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    grid = reader.GetOutput()
+    grid = vtu_io.read_grid(path)
     points = [grid.GetPoint(i)[:2] for i in range(grid.GetNumberOfPoints())]
     cells = []
     for c in range(grid.GetNumberOfCells()):
