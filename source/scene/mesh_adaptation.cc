@@ -86,7 +86,15 @@ namespace ausroll::scene
     // interpolated state is the undeformed one and Newton would only chase round-off.
     if (p.reequilibrate && time > 0.)
     {
-      // Equilibrium on the new mesh at the same time (no load change).
+      // Equilibrium on the new mesh at the same time (no load change). In a thermal scene the
+      // heat solve of the last step has already written the next step's temperature into the
+      // points: the re-equilibration evaluates them at the temperature of their state, and the
+      // next step carries its own thermal and transformation increment.
+      if (thermal)
+      {
+        thermal->hold_point_temperatures(system.material_points);
+        ++system.assembly_cache.state;
+      }
       const solver::NewtonResult result = newton.solve(*equilibrium, newton_log);
       if (result.converged)
         commit_step(false); // the predictor's u_n-1 stays the last step's converged state
@@ -98,6 +106,11 @@ namespace ausroll::scene
         contact.update_geometry(system.solution_ghosted, false);
         log << "  warning: re-equilibration after mesh adaptation at t = " << time << " failed ("
             << result.reason << "); the next step starts from the transferred state" << std::endl;
+      }
+      if (thermal)
+      {
+        thermal->release_point_temperatures(system.material_points);
+        ++system.assembly_cache.state;
       }
     }
     return true;

@@ -521,8 +521,8 @@ namespace ausroll::thermal
   }
 
   template <int dim>
-  void ThermalSystem<dim>::set_point_temperatures(PointStorage &points,
-                                                  const bool    committed_too) const
+  template <typename Write>
+  void ThermalSystem<dim>::write_point_temperatures(PointStorage &points, const Write &write) const
   {
     FEValues<dim>       fe_values(mapping, fe, quadrature, update_values);
     std::vector<double> T(quadrature.size());
@@ -533,20 +533,52 @@ namespace ausroll::thermal
         fe_values.get_function_values(temperature, T);
         const auto material_points = points.get_data(cell);
         for (unsigned int q = 0; q < T.size(); ++q)
+          write(*material_points[q], T[q]);
+      }
+  }
+
+  template <int dim>
+  void ThermalSystem<dim>::set_point_temperatures(PointStorage &points,
+                                                  const bool    committed_too) const
+  {
+    const double reference = parameters.expansion.reference_temperature;
+    write_point_temperatures(
+        points,
+        [committed_too, reference](material::MaterialPoint &point, const double T)
         {
-          material_points[q]->trial.temperature = T[q];
+          point.trial.temperature = T;
           if (committed_too)
           {
-            // the initial state F = I excludes no thermal stretch: that of the reference
-            // (stress-free) temperature
-            material_points[q]->committed.temperature = T[q];
-            material_points[q]->committed.evaluation_temperature
-                = parameters.expansion.reference_temperature;
-            material_points[q]->trial.evaluation_temperature
-                = parameters.expansion.reference_temperature;
+            // the initial state F = I excludes no thermal stretch: that of
+            // the reference (stress-free) temperature
+            point.committed.temperature = T;
+            point.committed.evaluation_temperature = reference;
+            point.trial.evaluation_temperature = reference;
           }
+        });
+  }
+
+  template <int dim>
+  void ThermalSystem<dim>::hold_point_temperatures(PointStorage &points) const
+  {
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &point : points.get_data(cell))
+        {
+          point->committed.temperature = point->committed.evaluation_temperature;
+          point->trial.temperature = point->committed.evaluation_temperature;
         }
-      }
+  }
+
+  template <int dim>
+  void ThermalSystem<dim>::release_point_temperatures(PointStorage &points) const
+  {
+    write_point_temperatures(points,
+                             [](material::MaterialPoint &point, const double T)
+                             {
+                               point.trial.temperature = T;
+                               point.committed.temperature = T;
+                             });
   }
 
   template <int dim>

@@ -57,6 +57,17 @@ dilatometry  the 3D block (free on its symmetry planes) with all faces cooled fr
              fraction to 1e-8: the interior temperature is the CG solution of the heat equation (to
              1e-7 K here, and df/dT <= b), the history has 10 digits. The Newton tolerance is 1e-8 N (1e-12 of the internal forces E alpha dT A
              ~ 1e4 N that cancel in the free block: 1e-10 is below their round-off).
+adapted      the dilatometry block (finite strain) with the isothermal split (Coupling/Iterations = 1:
+             the heat solve of step n writes T(t_n+1) into the points) and the mesh adapted every 2
+             steps (Kelly): the re-equilibration after each mesh change is an equilibrium at the
+             temperature the points were evaluated at, so it carries no thermal or transformation
+             increment: every load step from the second on solves its own (at least one Newton
+             solve; before 2026-12-08 the step after an adaptation had none, its increment having
+             been solved in the re-equilibration), the re-equilibrations take at most one solve
+             each (the convergence test's first iteration at a zero force level: the transferred
+             uniform, stress-free state is in equilibrium), and the history equals the run on the
+             fixed mesh (a uniform state is exact on every mesh): corner displacements to 1e-8 of
+             0.01 mm, martensite fractions to 1e-8.
 quenched     (ctest check/thermal_trip) Phases/Initial state = quenched: the dilatometry block at
              0.2 wt% C (Ms 364.7 C) starts at 250 C holding the Koistinen-Marburger fraction f_0 =
              1 - exp(-0.011 (Ms - 250)) = 0.717 in its stress-free reference and cools to 20 C:
@@ -175,6 +186,7 @@ Usage: check_thermal.py AUSROLL SOURCE_DIR [CASE ...] (without cases: all but tr
 import csv
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -275,7 +287,7 @@ def conduction_error(ausroll, prm, steps, directory, settings=()):
 def main():
     ausroll, source = sys.argv[1], sys.argv[2]
     cases = sys.argv[3:] or ["conduction", "adiabatic", "free", "clamped", "plane_strain",
-                             "cylinder", "coupling", "dilatometry", "reheat", "conductance", "friction",
+                             "cylinder", "coupling", "dilatometry", "adapted", "reheat", "conductance", "friction",
                              "softening", "bainite", "np2", "resume"]
     scenes = os.path.join(source, "tests", "checks", "scenes")
     strip = os.path.join(scenes, "thermal_conduction.prm")
@@ -497,6 +509,32 @@ def main():
                    worst < 1e-8 and f_end > 0.5)
             checks(f"dilatometry ({kinematics}): Koistinen-Marburger fraction to 1e-8", worst_f < 1e-8)
             checks(f"dilatometry ({kinematics}): stress-free (reactions below 1e-6 N)", reactions < 1e-6)
+
+    if "adapted" in cases:
+        split = phase_block("250 - 230 * t") + ["Model/Kinematics=finite strain", "Coupling/Iterations=1"]
+        adapt = ["Adaptivity/Indicators=Kelly", "Adaptivity/Interval=2", "Adaptivity/Maximum level=2"]
+        run(ausroll, block, split, "adapted_fixed")
+        result = run(ausroll, block, split + adapt, "adapted")
+        fixed, rows = history("adapted_fixed"), history("adapted")
+        adaptations = sum(1 for a, b in zip(rows, rows[1:]) if a["dofs"] != b["dofs"])
+        step_solves = sum(int(row["newton_iterations"]) for row in rows)
+        all_solves = int(re.search(r"assemblies: \d+: \d+ at the start of a solve \([^)]*\), (\d+) after a "
+                                   r"linear solve", result.stdout).group(1))
+        lazy = [int(row["step"]) for row in rows[2:] if int(row["newton_iterations"]) == 0]
+        worst, worst_f = 0.0, 0.0
+        for a, b in zip(fixed, rows):
+            for c in "xyz":
+                worst = max(worst, abs(float(a[f"corner_u{c}"]) - float(b[f"corner_u{c}"])) / 0.01)
+            worst_f = max(worst_f, abs(float(a["martensite_mean"]) - float(b["martensite_mean"])))
+        print(f"adapted: {adaptations} mesh changes ({rows[0]['dofs']} -> {rows[-1]['dofs']} DoFs), "
+              f"{step_solves} solves in the steps, {all_solves - step_solves} in the re-equilibrations, "
+              f"steps without a solve: {lazy}; against the fixed mesh: corner {worst:.2e} of 0.01 mm, "
+              f"fraction {worst_f:.2e}")
+        checks("adapted: the mesh changes at least twice", adaptations >= 2)
+        checks("adapted: every step from the second on solves its own thermal increment", not lazy)
+        checks("adapted: at most one solve per re-equilibration", all_solves - step_solves <= adaptations)
+        checks("adapted: history of the fixed mesh (corner to 1e-8 of 0.01 mm, fraction to 1e-8)",
+               len(rows) == len(fixed) and worst < 1e-8 and worst_f < 1e-8)
 
     if "quenched" in cases:
         # Phases/Initial state = quenched: a low-carbon block (Ms(0.2) = 364.7 C) starts at 250 C

@@ -126,6 +126,20 @@ namespace ausroll::thermal
         @p committed_too, their committed states). */
     void set_point_temperatures(PointStorage &points, const bool committed_too) const;
 
+    /**
+     * After the heat solve of a step the points hold the temperature of the next step. For a
+     * solve at the time of the committed state (the re-equilibration after a mesh change,
+     * Scene::adapt_mesh) make the temperature the points' states were evaluated at
+     * (MaterialState::evaluation_temperature) their trial and committed temperature, so that the
+     * solve carries no thermal or transformation increment; release_point_temperatures() writes
+     * the next step's temperature back.
+     */
+    void hold_point_temperatures(PointStorage &points) const;
+
+    /** The temperature at the material points into their trial and committed states, their
+        evaluation temperatures kept (after hold_point_temperatures()). */
+    void release_point_temperatures(PointStorage &points) const;
+
     /** @name Mesh changes and checkpoints (parallel::distributed::SolutionTransfer) */
     //@{
     /** Before Triangulation::execute_coarsening_and_refinement(). */
@@ -157,6 +171,11 @@ namespace ausroll::thermal
     Balance balance;          ///< heat flows of the last step
 
   private:
+    /** Call @p write(point, T) for every locally owned material point with the temperature
+        field's value T there. */
+    template <typename Write>
+    void write_point_temperatures(PointStorage &points, const Write &write) const;
+
     /** Assemble the backward-Euler system (@p residual null) or, with @p residual, the
         unconstrained residual of the converged step at @p T (reactions of prescribed
         temperatures). */
