@@ -329,7 +329,8 @@ namespace ausroll::scene
       system.step_start = 0.;
       system.start_step(0.); // solution = step_start
       time = 0.;
-      initialize_temperature();
+      if (!parameters.phases.enabled)
+        initialize_temperature(); // (with phases: done by initialize_phases() above)
       std::string message;
       if (!equilibrium->assemble(false, message))
         throw RunFailure("initial state: " + message);
