@@ -140,13 +140,13 @@ namespace ausroll::contact
   }
 
   template <int dim>
-  unsigned int ContactOperator<dim>::update_statuses()
+  unsigned int ContactOperator<dim>::update_statuses(const unsigned int change_limit)
   {
     unsigned int changes = 0;
     for (Node &n : nodes)
     {
       if (n.current.status == ContactStatus::open || n.fresh
-          || n.changes >= parameters.max_status_changes)
+          || n.changes >= std::min(parameters.max_status_changes, change_limit))
         continue;
       const FrictionLaw &friction = *dies[n.current.die]->friction;
       ContactStatus      target = n.current.status;

@@ -86,9 +86,9 @@ namespace
       update_geometry(u, true, false);
       return fresh && status != Status::open ? 1 : 0;
     }
-    unsigned int update_statuses() override
+    unsigned int update_statuses(const unsigned int change_limit) override
     {
-      if (status == Status::open || fresh || changes >= max_changes)
+      if (status == Status::open || fresh || changes >= std::min(max_changes, change_limit))
         return 0;
       Status target = status;
       if (Rn < -force_tolerance)
@@ -507,6 +507,17 @@ namespace
     parameters->fresh_sticks_slip = true;
     return parameters;
   }
+
+  /** `Nested active set/Status changes inside Newton = changes` (with `Fresh sticks slip` if
+      @p fresh). */
+  std::shared_ptr<const contact::StrategyParameters>
+  changes_inside_newton(const unsigned int changes, const bool fresh = false)
+  {
+    auto parameters = std::make_shared<contact::NestedActiveSetParameters>();
+    parameters->changes_inside_newton = changes;
+    parameters->fresh_sticks_slip = fresh;
+    return parameters;
+  }
 } // namespace
 
 // Active set: the node closes inside Newton when the free iterate passes the stop (step 2) and
@@ -610,6 +621,68 @@ TEST(ContactStrategy, NestedActiveSetFreshSticksSlipAfterAFailure)
   }
 }
 
+// Status changes inside Newton: the tensile reaction of step 3 (press and release) and the
+// friction limit of step 3 (press and slide) are judged at the first assembly of the step, as by
+// the active set: the same exact states without the outer pass of step 3.
+TEST(ContactStrategy, NestedActiveSetChangesInsideNewtonSaveThePass)
+{
+  for (const unsigned int changes : {1u, 2u})
+  {
+    SCOPED_TRACE("Status changes inside Newton = " + std::to_string(changes));
+    StopScene release(press_and_release(), "nested active set", changes_inside_newton(changes));
+    const std::vector<Record> released = release.run();
+    expect_states(released, press_and_release_states);
+    expect_outer_passes(released, {0, 0, 0, 0});
+
+    StopScene slide(press_and_slide(), "nested active set", changes_inside_newton(changes));
+    const std::vector<Record> slid = slide.run();
+    expect_states(slid, press_and_slide_states);
+    expect_outer_passes(slid, {0, 0, 0, 0});
+  }
+}
+
+// The hysteresis of Status changes inside Newton: with Fresh sticks slip, the node that closed in
+// step 2 (press and hold) starts step 3 slipping (its first change of the step) and its slip
+// reverses. With N = 1 it has used its change and is held: the reversal is judged at the converged
+// state (one outer pass, as without the entry); with N = 2 it sticks again inside Newton (no outer
+// pass). Both end in the exact sticking states.
+TEST(ContactStrategy, NestedActiveSetChangesInsideNewtonHoldANodeAfterN)
+{
+  StopScene once(press_and_hold(), "nested active set", changes_inside_newton(1, true));
+  const std::vector<Record> held = once.run();
+  expect_states(held, press_and_hold_states);
+  expect_outer_passes(held, {0, 0, 1, 0});
+
+  StopScene twice(press_and_hold(), "nested active set", changes_inside_newton(2, true));
+  const std::vector<Record> judged = twice.run();
+  expect_states(judged, press_and_hold_states);
+  expect_outer_passes(judged, {0, 0, 0, 0});
+}
+
+// The change limit of ContactStatusSet::update_statuses() on the node alone: a sticking node
+// beyond its friction limit that has changed once in the step (it closed) is not judged with a
+// limit of 1, and slips with a limit of 2 or without a limit.
+TEST(ContactStrategy, UpdateStatusesHonoursTheChangeLimit)
+{
+  for (const unsigned int limit : {1u, 2u, ContactStatusSet::no_change_limit})
+  {
+    SCOPED_TRACE("change limit " + std::to_string(limit));
+    StopNode                              node(press_and_slide());
+    dealii::TrilinosWrappers::MPI::Vector u(dealii::complete_index_set(2), MPI_COMM_SELF);
+    node.set_time(0.75);
+    u[0] = 0.7; // penetrates the stop at g = 0.6
+    u.compress(dealii::VectorOperation::insert);
+    ASSERT_EQ(node.update_geometry(u, true, false), 1u); // closes in stick: one change
+    u[0] = 0.6;
+    u.compress(dealii::VectorOperation::insert);
+    node.update_geometry(u, false, false);
+    node.assemble(u); // R_n = 0.9, R_t = 0.75 > mu R_n = 0.45
+    node.start_iterate();
+    EXPECT_EQ(node.update_statuses(limit), limit == 1u ? 0u : 1u);
+    EXPECT_EQ(node.status, limit == 1u ? Status::stick : Status::slip);
+  }
+}
+
 /** The load-increment ratio on @p problem: the states of the nominal steps @p nominal with the
     sub-steps that end at @p events (after the first and the second nominal step) in between. */
 static void expect_ratio_states(const StopProblem             &problem,
@@ -691,7 +764,8 @@ TEST(ContactStrategy, RegisteredWithTheirSubsections)
   EXPECT_EQ(contact::ContactParameters::moved_entries().at("Contact/Ratio tolerance"),
             "`Contact/Load increment ratio/Ratio tolerance`");
 
-  // `Nested active set/Fresh sticks slip`: false unless set
+  // `Nested active set/Fresh sticks slip`: false unless set; `Status changes inside Newton`: 0
+  // unless set
   for (const bool value : {false, true})
   {
     dealii::ParameterHandler nested;
@@ -700,6 +774,7 @@ TEST(ContactStrategy, RegisteredWithTheirSubsections)
                                                "  set Strategy = nested active set\n")
                                    + (value ? "  subsection Nested active set\n"
                                               "    set Fresh sticks slip = true\n"
+                                              "    set Status changes inside Newton = 3\n"
                                               "  end\n"
                                             : "")
                                    + "end\n");
@@ -709,5 +784,6 @@ TEST(ContactStrategy, RegisteredWithTheirSubsections)
         nested_parameters.strategy_parameters.get());
     ASSERT_NE(parsed, nullptr);
     EXPECT_EQ(parsed->fresh_sticks_slip, value);
+    EXPECT_EQ(parsed->changes_inside_newton, value ? 3u : 0u);
   }
 }

@@ -260,7 +260,7 @@ namespace ausroll::contact
      * reversed slip sticks). Call after compute_reactions(). Returns the number of changes over
      * all ranks.
      */
-    unsigned int update_statuses() override;
+    unsigned int update_statuses(const unsigned int change_limit) override;
 
     /**
      * Load-increment ratio: the fraction alpha in [0, 1] of the current step at which the first

@@ -80,9 +80,14 @@ namespace ausroll::contact
         number of nodes closed. */
     virtual unsigned int close_penetrating_nodes(const Vector &u) = 0;
 
+    /** No limit for update_statuses() beyond `Contact/Maximum status changes`. */
+    static constexpr unsigned int no_change_limit = static_cast<unsigned int>(-1);
+
     /** Change statuses by the force criteria (tension opens, the friction limit slips, reversed
-        slip sticks); returns the number of changes. */
-    virtual unsigned int update_statuses() = 0;
+        slip sticks); only nodes that have changed fewer than @p change_limit times in this step
+        (and fewer than `Contact/Maximum status changes`) are judged. Returns the number of
+        changes. */
+    virtual unsigned int update_statuses(const unsigned int change_limit) = 0;
 
     /** Fraction of the current step in [0, 1] at which the first node changes status (linear
         interpolation from the committed state); 1 if none. */

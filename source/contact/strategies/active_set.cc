@@ -21,7 +21,7 @@ namespace ausroll::contact
     // require the constraints to be rebuilt and the system re-assembled.
     if (passes++ >= max_reassemblies)
       return 0;
-    return nodes.update_statuses();
+    return nodes.update_statuses(ContactStatusSet::no_change_limit);
   }
 
   std::unique_ptr<StatusStrategy> ActiveSetParameters::create(ContactStatusSet &nodes) const

@@ -2,9 +2,12 @@
 
 namespace ausroll::contact
 {
-  NestedActiveSet::NestedActiveSet(ContactStatusSet &nodes, const bool fresh_sticks_slip)
+  NestedActiveSet::NestedActiveSet(ContactStatusSet  &nodes,
+                                   const bool         fresh_sticks_slip,
+                                   const unsigned int changes_inside_newton)
       : StatusStrategy(nodes)
       , fresh_sticks_slip(fresh_sticks_slip)
+      , changes_inside_newton(changes_inside_newton)
   {
     nodes.hold_changed_nodes(true);
   }
@@ -29,6 +32,12 @@ namespace ausroll::contact
       nodes.release_fresh_sticks();
   }
 
+  void NestedActiveSet::begin_iterate(const double t)
+  {
+    StatusStrategy::begin_iterate(t);
+    passes = 0;
+  }
+
   void NestedActiveSet::update_geometry(const ContactStatusSet::Vector &u)
   {
     // Penetrating open nodes close at every iterate, but only those that have not changed in
@@ -36,6 +45,16 @@ namespace ausroll::contact
     // node opened by tension that re-penetrates slightly in the next iterates would otherwise
     // chatter.
     nodes.update_geometry(u, true, true);
+  }
+
+  unsigned int NestedActiveSet::update_at_iterate()
+  {
+    // Judged at every iterate as by the active set, but a node only for its first
+    // changes_inside_newton changes of the step: after that it is held (no chatter between
+    // iterates) and judged at converged states only.
+    if (changes_inside_newton == 0 || passes++ >= max_reassemblies)
+      return 0;
+    return nodes.update_statuses(changes_inside_newton);
   }
 
   unsigned int NestedActiveSet::update_at_convergence(const ContactStatusSet::Vector &u,
@@ -46,7 +65,7 @@ namespace ausroll::contact
     nodes.set_time(time);
     nodes.start_iterate();
     const unsigned int closed = nodes.close_penetrating_nodes(u);
-    const unsigned int changed = nodes.update_statuses();
+    const unsigned int changed = nodes.update_statuses(ContactStatusSet::no_change_limit);
     if (closed + changed > 0)
       log << "      contact: " << closed << " closed, " << changed << " other status change"
           << (changed == 1 ? "" : "s") << " at the converged state" << std::endl;
@@ -79,6 +98,15 @@ namespace ausroll::contact
         "again at the first converged state. false: they start sticking and slip only after a "
         "converged pass (or when a failed attempt is solved again). See "
         "doc/studies/newton_economy.md, section 6.");
+    prm.declare_entry(
+        "Status changes inside Newton",
+        "0",
+        dealii::Patterns::Integer(0),
+        "N > 0: the contact statuses are also judged at every Newton iterate (by the reactions of "
+        "that assembly, as with Strategy = active set), a node only while it has changed status "
+        "fewer than N times in the load step; after that it is held and judged only at converged "
+        "states (no chatter). 0: statuses other than closing are judged only at converged states. "
+        "See doc/studies/newton_economy.md, section 7.");
   }
 
   void NestedActiveSetParameters::parse(dealii::ParameterHandler &prm,
@@ -86,11 +114,12 @@ namespace ausroll::contact
                                         const std::string &)
   {
     fresh_sticks_slip = prm.get_bool("Fresh sticks slip");
+    changes_inside_newton = prm.get_integer("Status changes inside Newton");
   }
 
   std::unique_ptr<StatusStrategy> NestedActiveSetParameters::create(ContactStatusSet &nodes) const
   {
-    return std::make_unique<NestedActiveSet>(nodes, fresh_sticks_slip);
+    return std::make_unique<NestedActiveSet>(nodes, fresh_sticks_slip, changes_inside_newton);
   }
 } // namespace ausroll::contact
 
