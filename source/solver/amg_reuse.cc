@@ -26,7 +26,7 @@ namespace ausroll::solver
   void AmgReuse::solved(const unsigned int iterations, const double reduction)
   {
     const double rate = iterations_per_decade(iterations, reduction);
-    if (rate == 0.)
+    if (rate == 0. || iterations < minimum_judged_iterations)
       return;
     if (reference == 0.)
       reference = rate;

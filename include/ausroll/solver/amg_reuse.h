@@ -16,7 +16,12 @@ namespace ausroll::solver
    *    residual reduction of the first solve with the set-up (the tangent has moved away from
    *    the matrix the hierarchy was built from: contact status changes, plastic zones).
    * Iterations per decade, k / log10(|b| / |b - A x|), and not iterations, so that solves to
-   * different tolerances (Krylov tolerance = adaptive) compare.
+   * different tolerances (Krylov tolerance = adaptive) compare. A solve of fewer than
+   * minimum_judged_iterations iterations is not judged (it neither sets the reference nor
+   * triggers a rebuild): its count is too coarse for a rate (1 to 9), and the first iterations of
+   * GMRES reduce the residual faster than the later ones (3D gear, level 2: 4 iterations for
+   * 2 decades in the first solve of a step, 28 for 3 decades in the third); such a solve is also
+   * too cheap for a rebuild to pay (a set-up costs about 20 Krylov iterations there).
    */
   class AmgReuse
   {
@@ -37,9 +42,13 @@ namespace ausroll::solver
      * A converged solve with the current set-up took @p iterations Krylov iterations and reduced
      * the residual by @p reduction = |b - A x| / |b|: the first one after set_up() becomes the
      * reference, a later one slower than the rebuild factor times it invalidates the set-up.
-     * A solve of no iterations or no reduction (b = 0) says nothing and is ignored.
+     * A solve of fewer than minimum_judged_iterations iterations or no reduction (b = 0) says
+     * nothing and is ignored.
      */
     void solved(unsigned int iterations, double reduction);
+
+    /** Solves with fewer Krylov iterations are not judged (see the class comment). */
+    static constexpr unsigned int minimum_judged_iterations = 10;
 
     /** Krylov iterations per decade of residual reduction (0 if nothing was reduced). */
     static double iterations_per_decade(unsigned int iterations, double reduction);
