@@ -44,11 +44,11 @@ namespace ausroll::solver
     std::string direct_package = "automatic"; ///< `Direct solver package` (automatic | MUMPS | KLU)
     KrylovMethod    krylov_method = KrylovMethod::gmres; ///< `Iterative method` (GMRES | CG)
     double          relative_tolerance = 1e-10; ///< `Relative tolerance` of the iterative solver
-    KrylovTolerance krylov_tolerance = KrylovTolerance::fixed; ///< `Krylov tolerance`
+    KrylovTolerance krylov_tolerance = KrylovTolerance::adaptive; ///< `Krylov tolerance`
     /** `Maximum forcing term`: the loosest relative tolerance of Krylov tolerance = adaptive */
-    double maximum_forcing_term = 1e-2;
+    double maximum_forcing_term = 1e-4;
     /** `AMG reuse`: keep the AMG set-up over the solves of one matrix pattern (LinearSolver) */
-    bool amg_reuse = false;
+    bool amg_reuse = true;
     /** `AMG rebuild factor`: a kept AMG is rebuilt when a solve needs more than this many
         times the Krylov iterations per decade of its first solve */
     double       amg_rebuild_factor = 1.5;
