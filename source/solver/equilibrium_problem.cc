@@ -35,6 +35,7 @@ namespace ausroll::solver
       , time(time)
       , timer(timer)
       , detail_log(detail_log)
+      , linear_tolerance(linear_solver.default_relative_tolerance())
   {
   }
 
@@ -122,7 +123,7 @@ namespace ausroll::solver
       return solve_out_of_plane_increment(linear_solver, system);
     system.increment = 0.;
     const LinearSolveInfo info
-        = linear_solver.solve(system.system_matrix, system.increment, system.rhs);
+        = linear_solver.solve(system.system_matrix, system.increment, system.rhs, linear_tolerance);
     system.newton_constraints.distribute(system.increment);
     return info;
   }

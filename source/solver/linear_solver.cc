@@ -14,6 +14,8 @@
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <sstream>
 
@@ -34,6 +36,7 @@ namespace ausroll::solver
   template <int dim>
   LinearSolver<dim>::LinearSolver(const LinearSolverParameters &parameters)
       : parameters(parameters)
+      , amg_reuse(parameters.amg_reuse, parameters.amg_rebuild_factor)
   {
   }
 
@@ -44,6 +47,7 @@ namespace ausroll::solver
     const IndexSet &owned = dof_handler.locally_owned_dofs();
     const unsigned  n_modes = mechanics::n_rigid_body_modes<dim>;
     rigid_body_modes.assign(n_modes, std::vector<double>(owned.n_elements(), 0.));
+    amg_reuse.invalidate(); // a kept AMG has the modes of the old DoFs
 
     std::map<types::global_dof_index, Point<dim>> points;
     DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
@@ -72,6 +76,9 @@ namespace ausroll::solver
     direct_problem.reset();
     factored_matrix = nullptr;
     factored_package.clear();
+    amg.reset();
+    amg_matrix = nullptr;
+    amg_reuse.invalidate();
   }
 
   template <int dim>
@@ -176,13 +183,177 @@ namespace ausroll::solver
                                            TrilinosWrappers::MPI::Vector        &x,
                                            const TrilinosWrappers::MPI::Vector  &b) const
   {
-    return solve(A, VectorList{&x}, ConstVectorList{&b});
+    return solve(A, VectorList{&x}, ConstVectorList{&b}, parameters.relative_tolerance);
+  }
+
+  template <int dim>
+  LinearSolveInfo LinearSolver<dim>::solve(const TrilinosWrappers::SparseMatrix &A,
+                                           TrilinosWrappers::MPI::Vector        &x,
+                                           const TrilinosWrappers::MPI::Vector  &b,
+                                           const double relative_tolerance) const
+  {
+    return solve(A, VectorList{&x}, ConstVectorList{&b}, relative_tolerance);
   }
 
   template <int dim>
   LinearSolveInfo LinearSolver<dim>::solve(const TrilinosWrappers::SparseMatrix &A,
                                            const VectorList                     &xs,
                                            const ConstVectorList                &bs) const
+  {
+    return solve(A, xs, bs, parameters.relative_tolerance);
+  }
+
+  template <int dim>
+  void LinearSolver<dim>::set_up_amg(const TrilinosWrappers::SparseMatrix &A) const
+  {
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic = true;
+    data.higher_order_elements = true;
+    data.smoother_sweeps = parameters.amg_smoother_sweeps;
+    data.aggregation_threshold = parameters.amg_aggregation_threshold;
+    data.smoother_type = parameters.amg_smoother_type.c_str();
+    Teuchos::ParameterList              list;
+    std::unique_ptr<Epetra_MultiVector> unused_modes;
+    data.set_parameters(list, unused_modes, A.trilinos_matrix());
+
+    // (an Epetra_MultiVector of no vectors throws: create it only when there are modes)
+    const unsigned int                  n_local = A.local_range().second - A.local_range().first;
+    std::unique_ptr<Epetra_MultiVector> modes;
+    // ML's parameters must agree on every rank (its set-up reduces over them): use the modes
+    // only if every rank has them for its rows
+    const bool modes_here = !rigid_body_modes.empty() && rigid_body_modes[0].size() == n_local;
+    double     dummy_mode_value = 0.;
+    if (Utilities::MPI::min(modes_here ? 1u : 0u, A.get_mpi_communicator()) == 1u)
+    {
+      modes = std::make_unique<Epetra_MultiVector>(A.trilinos_matrix().DomainMap(),
+                                                   rigid_body_modes.size());
+      for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
+        for (unsigned int i = 0; i < n_local; ++i)
+          (*modes)[m][i] = rigid_body_modes[m][i];
+      // aggregate nodes (the dim displacement DoFs of a support point are consecutive in
+      // deal.II's FESystem numbering and owned by one rank), as ML expects for elasticity
+      // (3D block, doc/benchmarks.md: 14 instead of 17 CG iterations and 1.0 instead of
+      // 1.8 s CPU per solve at 1.1e5 DoFs)
+      list.set("PDE equations", int(dim));
+      list.set("null space: type", "pre-computed");
+      list.set("null space: dimension", modes->NumVectors());
+      // (a rank without rows still passes a valid pointer, as ML requires)
+      list.set("null space: vectors", n_local > 0 ? modes->Values() : &dummy_mode_value);
+    }
+    amg.reset();
+    amg_matrix = nullptr;
+    auto fresh = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    fresh->initialize(A, list);
+    amg = std::move(fresh);
+    amg_matrix = &A.trilinos_matrix();
+    amg_reuse.set_up();
+    ++amg_setups;
+  }
+
+  template <int dim>
+  void LinearSolver<dim>::solve_iterative(const TrilinosWrappers::SparseMatrix &A,
+                                          const VectorList                     &xs,
+                                          const ConstVectorList                &bs,
+                                          const double                          relative_tolerance,
+                                          LinearSolveInfo                      &info) const
+  {
+    Timer timer;
+    info.relative_tolerance = relative_tolerance;
+    // a kept AMG belongs to this very matrix object (its finest level reads the current values)
+    if (amg_matrix != &A.trilinos_matrix())
+      amg_reuse.invalidate();
+    const auto new_setup = [&]()
+    {
+      const double wall = timer.wall_time(), cpu = timer.cpu_time();
+      set_up_amg(A);
+      info.setup_seconds += timer.wall_time() - wall;
+      info.setup_cpu_seconds += timer.cpu_time() - cpu;
+      info.amg_setup = true;
+    };
+    if (!amg || amg_reuse.needs_setup())
+      new_setup();
+
+    // one Krylov solve per right-hand side with the one preconditioner; the message of a failure
+    // (empty: converged)
+    const auto krylov = [&](const unsigned int k) -> std::string
+    {
+      TrilinosWrappers::MPI::Vector       &x = *xs[k];
+      const TrilinosWrappers::MPI::Vector &b = *bs[k];
+      SolverControl control(parameters.max_iterations, relative_tolerance * b.l2_norm());
+      x = 0.;
+      try
+      {
+        if (parameters.krylov_method == KrylovMethod::cg)
+        {
+          SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+          cg.solve(A, x, b, *amg);
+        }
+        else
+        {
+          // right preconditioning: GMRES then measures the true residual |b - A x|, which the
+          // tolerance refers to (left preconditioning stops on the preconditioned residual,
+          // measured up to 1e3 times smaller than the true one for the 3D F-bar tangent)
+          SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+              control,
+              SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+                  parameters.restart, /*right_preconditioning=*/true));
+          gmres.solve(A, x, b, *amg);
+        }
+      }
+      catch (const SolverControl::NoConvergence &e)
+      {
+        info.iterations += e.last_step;
+        std::ostringstream msg;
+        msg << "linear solver failed: the iterative solve did not converge in " << e.last_step
+            << " iterations (relative residual " << e.last_residual / b.l2_norm() << ", tolerance "
+            << relative_tolerance << "): try Solver/Linear solver/Type = direct";
+        return msg.str();
+      }
+      info.iterations += control.last_step();
+      // the true residual: a Krylov method stops on its own (recursive) residual estimate;
+      // accepted up to 100 x the tolerance (round-off of the recursion at tight tolerances),
+      // and never above sqrt(tolerance) (a loose forcing term: still a contraction)
+      TrilinosWrappers::MPI::Vector r(b);
+      A.vmult(r, x);
+      r.sadd(-1., 1., b);
+      const double limit
+          = std::min(100. * relative_tolerance, std::sqrt(relative_tolerance)) * b.l2_norm();
+      if (!(r.l2_norm() <= limit || r.l2_norm() == 0.))
+        return "linear solver failed: the iterative solve stopped at a true relative residual "
+               + std::to_string(r.l2_norm() / b.l2_norm()) + " (tolerance "
+               + std::to_string(relative_tolerance) + "): try Solver/Linear solver/Type = direct";
+      amg_reuse.solved(control.last_step(), b.l2_norm() > 0. ? r.l2_norm() / b.l2_norm() : 0.);
+      return std::string();
+    };
+    for (unsigned int k = 0; k < xs.size(); ++k)
+    {
+      std::string failure = krylov(k);
+      if (!failure.empty() && !info.amg_setup)
+      {
+        // a kept AMG may be too far from this matrix: once more with a new one
+        amg_reuse.invalidate();
+        new_setup();
+        failure = krylov(k);
+      }
+      if (!failure.empty())
+      {
+        amg_reuse.invalidate();
+        throw IterativeSolveFailure(failure);
+      }
+    }
+    if (!parameters.amg_reuse)
+    {
+      // (without reuse the hierarchy is not kept: the memory of a run stays that of one solve)
+      amg.reset();
+      amg_matrix = nullptr;
+    }
+  }
+
+  template <int dim>
+  LinearSolveInfo LinearSolver<dim>::solve(const TrilinosWrappers::SparseMatrix &A,
+                                           const VectorList                     &xs,
+                                           const ConstVectorList                &bs,
+                                           const double relative_tolerance) const
   {
     AssertThrow(xs.size() == bs.size() && !xs.empty(), ExcInternalError());
     Timer           timer;
@@ -219,96 +390,7 @@ namespace ausroll::solver
         }
       }
       else
-      {
-        TrilinosWrappers::PreconditionAMG::AdditionalData data;
-        data.elliptic = true;
-        data.higher_order_elements = true;
-        data.smoother_sweeps = parameters.amg_smoother_sweeps;
-        data.aggregation_threshold = parameters.amg_aggregation_threshold;
-        data.smoother_type = parameters.amg_smoother_type.c_str();
-        Teuchos::ParameterList              list;
-        std::unique_ptr<Epetra_MultiVector> unused_modes;
-        data.set_parameters(list, unused_modes, A.trilinos_matrix());
-
-        // (an Epetra_MultiVector of no vectors throws: create it only when there are modes)
-        const unsigned int n_local = A.local_range().second - A.local_range().first;
-        std::unique_ptr<Epetra_MultiVector> modes;
-        // ML's parameters must agree on every rank (its set-up reduces over them): use the modes
-        // only if every rank has them for its rows
-        const bool modes_here = !rigid_body_modes.empty() && rigid_body_modes[0].size() == n_local;
-        double     dummy_mode_value = 0.;
-        if (Utilities::MPI::min(modes_here ? 1u : 0u, A.get_mpi_communicator()) == 1u)
-        {
-          modes = std::make_unique<Epetra_MultiVector>(A.trilinos_matrix().DomainMap(),
-                                                       rigid_body_modes.size());
-          for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
-            for (unsigned int i = 0; i < n_local; ++i)
-              (*modes)[m][i] = rigid_body_modes[m][i];
-          // aggregate nodes (the dim displacement DoFs of a support point are consecutive in
-          // deal.II's FESystem numbering and owned by one rank), as ML expects for elasticity
-          // (3D block, doc/benchmarks.md: 14 instead of 17 CG iterations and 1.0 instead of
-          // 1.8 s CPU per solve at 1.1e5 DoFs)
-          list.set("PDE equations", int(dim));
-          list.set("null space: type", "pre-computed");
-          list.set("null space: dimension", modes->NumVectors());
-          // (a rank without rows still passes a valid pointer, as ML requires)
-          list.set("null space: vectors", n_local > 0 ? modes->Values() : &dummy_mode_value);
-        }
-        TrilinosWrappers::PreconditionAMG amg;
-        amg.initialize(A, list);
-        info.setup_seconds = timer.wall_time();
-        info.setup_cpu_seconds = timer.cpu_time();
-
-        // one Krylov solve per right-hand side with the one preconditioner
-        for (unsigned int k = 0; k < xs.size(); ++k)
-        {
-          TrilinosWrappers::MPI::Vector       &x = *xs[k];
-          const TrilinosWrappers::MPI::Vector &b = *bs[k];
-          SolverControl                        control(parameters.max_iterations,
-                                parameters.relative_tolerance * b.l2_norm());
-          x = 0.;
-          try
-          {
-            if (parameters.krylov_method == KrylovMethod::cg)
-            {
-              SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-              cg.solve(A, x, b, amg);
-            }
-            else
-            {
-              // right preconditioning: GMRES then measures the true residual |b - A x|, which the
-              // tolerance refers to (left preconditioning stops on the preconditioned residual,
-              // measured up to 1e3 times smaller than the true one for the 3D F-bar tangent)
-              SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-                  control,
-                  SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
-                      parameters.restart, /*right_preconditioning=*/true));
-              gmres.solve(A, x, b, amg);
-            }
-          }
-          catch (const SolverControl::NoConvergence &e)
-          {
-            std::ostringstream msg;
-            msg << "linear solver failed: the iterative solve did not converge in " << e.last_step
-                << " iterations (relative residual " << e.last_residual / b.l2_norm()
-                << ", tolerance " << parameters.relative_tolerance
-                << "): try Solver/Linear solver/Type = direct";
-            throw IterativeSolveFailure(msg.str());
-          }
-          info.iterations += control.last_step();
-          // the true residual: a Krylov method stops on its own (recursive) residual estimate
-          TrilinosWrappers::MPI::Vector r(b);
-          A.vmult(r, x);
-          r.sadd(-1., 1., b);
-          if (!(r.l2_norm() <= 100. * parameters.relative_tolerance * b.l2_norm()
-                || r.l2_norm() == 0.))
-            throw IterativeSolveFailure(
-                "linear solver failed: the iterative solve stopped at a true relative residual "
-                + std::to_string(r.l2_norm() / b.l2_norm()) + " (tolerance "
-                + std::to_string(parameters.relative_tolerance)
-                + "): try Solver/Linear solver/Type = direct");
-        }
-      }
+        solve_iterative(A, xs, bs, relative_tolerance, info);
     }
     catch (const IterativeSolveFailure &)
     {

@@ -1,4 +1,5 @@
 #include <ausroll/core/exceptions.h>
+#include <ausroll/solver/forcing_term.h>
 #include <ausroll/solver/newton_solver.h>
 
 #include <cmath>
@@ -74,6 +75,9 @@ namespace ausroll::solver
     // summary line at convergence says where the solves of the step went.
     std::ostringstream history;
     unsigned int       line_searches = 0;
+    // the Krylov tolerance of each linear solve (fixed, or inexact Newton); the test below stays
+    // on the true residual of every iterate
+    ForcingTerm forcing_term(parameters.linear);
 
     for (unsigned int it = 0;; ++it)
     {
@@ -152,6 +156,7 @@ namespace ausroll::solver
         constraints_ok = problem.constraint_violation() <= constraint_tolerance;
         first_norm = norm;
         previous_norm = std::numeric_limits<double>::infinity();
+        forcing_term.restart(); // new constraints: the residual history starts again
         log << "    Newton " << std::setw(2) << it << ": |r| = " << std::scientific
             << std::setprecision(3) << norm << "  (" << changes << " contact status change"
             << (changes > 1 ? "s" : "") << ")";
@@ -187,6 +192,7 @@ namespace ausroll::solver
                               && problem.constraint_violation() <= std::max(
                                      constraint_tolerance, 1e-3 * problem.length_scale());
       LinearSolveInfo info;
+      problem.set_linear_tolerance(forcing_term.next(norm, tolerance));
       try
       {
         info = problem.solve_for_increment();
@@ -199,8 +205,17 @@ namespace ausroll::solver
       }
       result.linear_iterations += info.iterations;
       log << "    linear solve: " << info.iterations << " iterations, " << std::fixed
-          << std::setprecision(3) << info.seconds << " s wall, " << info.cpu_seconds << " s CPU"
-          << std::defaultfloat << std::endl;
+          << std::setprecision(3) << info.seconds << " s wall, " << info.cpu_seconds << " s CPU";
+      if (info.iterative)
+      {
+        if (info.amg_setup)
+          log << " (AMG set-up " << info.setup_cpu_seconds << " s CPU";
+        else
+          log << " (AMG kept";
+        log << ", tolerance " << std::scientific << std::setprecision(1) << info.relative_tolerance
+            << ")";
+      }
+      log << std::defaultfloat << std::endl;
       ++result.iterations;
       if (tangent_check)
         problem.check_tangent(log);

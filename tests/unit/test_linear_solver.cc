@@ -7,8 +7,15 @@
  * residual |A x - b| / |b| stays at round-off level (bound 1e-12: the matrices are of order 10 and
  * condition numbers below 1e4, so a stable LU leaves 1e-15; the solver's own acceptance bound is
  * 1e-10).
+ *
+ * The iterative path: the forcing term of inexact Newton (ForcingTerm, `Krylov tolerance =
+ * adaptive`) against the Eisenstat-Walker formulas evaluated by hand, the rule that keeps or
+ * rebuilds the AMG (AmgReuse, `AMG reuse`), and the kept AMG at work in LinearSolver on a 3D
+ * Laplacian.
  */
 #include <ausroll/mechanics/rigid_body_modes.h>
+#include <ausroll/solver/amg_reuse.h>
+#include <ausroll/solver/forcing_term.h>
 #include <ausroll/solver/linear_solver.h>
 
 #include <deal.II/base/index_set.h>
@@ -18,6 +25,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 
@@ -145,5 +153,240 @@ TEST(RigidBodyModes, TranslationsAndRotations)
       EXPECT_EQ(rigid_body_mode<3>(k, c, x), c == k ? 1. : 0.);
       EXPECT_EQ(rigid_body_mode<3>(3 + k, c, x), u[c]) << "mode " << 3 + k << ", component " << c;
     }
+  }
+}
+
+namespace
+{
+  using ausroll::solver::AmgReuse;
+  using ausroll::solver::ForcingTerm;
+  using ausroll::solver::KrylovTolerance;
+  using ausroll::solver::LinearSolverParameters;
+
+  LinearSolverParameters forcing_parameters(const KrylovTolerance rule, const double eta_max)
+  {
+    LinearSolverParameters p;
+    p.krylov_tolerance = rule;
+    p.relative_tolerance = 1e-10;
+    p.maximum_forcing_term = eta_max;
+    return p;
+  }
+} // namespace
+
+// Krylov tolerance = fixed: every solve to Relative tolerance, whatever the residuals.
+TEST(ForcingTerm, FixedIsTheRelativeTolerance)
+{
+  ForcingTerm eta(forcing_parameters(KrylovTolerance::fixed, 1e-2));
+  EXPECT_EQ(eta.next(1., 1e-6), 1e-10);
+  EXPECT_EQ(eta.next(1e-3, 1e-6), 1e-10);
+  eta.restart();
+  EXPECT_EQ(eta.next(5e-6, 1e-6), 1e-10);
+}
+
+// Eisenstat-Walker choice 2 (gamma 0.9, alpha 2) with Kelley's safeguards, each branch against the
+// formula evaluated by hand (relative bound 1e-14: a few operations in double precision).
+TEST(ForcingTerm, EisenstatWalkerChoiceTwoWithSafeguards)
+{
+  const double tol = 1e-8; // Newton tolerance of the iterates (same unit as the residuals)
+  ForcingTerm  eta(forcing_parameters(KrylovTolerance::adaptive, 1e-2));
+  // first solve: eta_max
+  EXPECT_EQ(eta.next(1., tol), 1e-2);
+  // |r| falls by 10: 0.9 * 0.1^2 = 9e-3 (safeguard 0.9 * 1e-4 < 0.1 inactive, end game 5e-8)
+  EXPECT_NEAR(eta.next(0.1, tol), 9e-3, 1e-14 * 9e-3);
+  // |r| falls by 1e3: 0.9 * 1e-6 = 9e-7 (end game 0.5 * 1e-8 / 1e-4 = 5e-5 is larger: 5e-5)
+  EXPECT_NEAR(eta.next(1e-4, tol), 5e-5, 1e-14 * 5e-5);
+  // near the tolerance the end game bound wins and eta_max caps it: 0.5 * 1e-8 / 2e-8 = 0.25
+  EXPECT_EQ(eta.next(2e-8, tol), 1e-2);
+  // slow convergence: |r| falls by 2 only: 0.9 * 0.25 = 0.225, capped at eta_max
+  eta.restart();
+  EXPECT_EQ(eta.next(1., 1e-12), 1e-2);
+  EXPECT_EQ(eta.next(0.5, 1e-12), 1e-2);
+  // a fast fall with a tiny Newton tolerance: the floor is Relative tolerance (0.9 * 1e-16)
+  EXPECT_EQ(eta.next(0.5e-8, 1e-30), 1e-10);
+}
+
+TEST(ForcingTerm, SafeguardKeepsEtaFromFallingFasterThanItsSquare)
+{
+  // eta_max 0.5: after eta = 0.5 the safeguard 0.9 * 0.25 = 0.225 > 0.1 bounds the next eta
+  // from below although |r| fell by 1e4 (0.9 * 1e-8); with eta = 0.225 next, 0.9 * 0.225^2 =
+  // 0.0455625 < 0.1: no safeguard, the plain formula 0.9 * 1e-2 = 9e-3 holds
+  ForcingTerm eta(forcing_parameters(KrylovTolerance::adaptive, 0.5));
+  EXPECT_EQ(eta.next(1., 1e-12), 0.5);
+  EXPECT_NEAR(eta.next(1e-4, 1e-12), 0.225, 1e-14);
+  EXPECT_NEAR(eta.next(1e-5, 1e-12), 9e-3, 1e-14 * 9e-3);
+}
+
+TEST(ForcingTerm, RestartAndZeroResidualGiveTheMaximum)
+{
+  ForcingTerm eta(forcing_parameters(KrylovTolerance::adaptive, 1e-3));
+  // the first iterate of a step that only has to meet constraints has |r| = 0
+  EXPECT_EQ(eta.next(0., 1e-6), 1e-3);
+  EXPECT_EQ(eta.next(10., 1e-6), 1e-3); // no ratio to a zero residual
+  EXPECT_EQ(eta.next(1., 1e-6), 1e-3);  // 0.9 * 0.1^2 = 9e-3 capped at eta_max
+  EXPECT_NEAR(eta.next(1e-2, 1e-6), 9e-5, 1e-14 * 9e-5);
+  // a status pass: new constraints, the residual jumps up; the history starts again
+  eta.restart();
+  EXPECT_EQ(eta.next(100., 1e-6), 1e-3);
+}
+
+// The rate of a solve is its Krylov iterations per decade of residual reduction.
+TEST(AmgReuse, IterationsPerDecade)
+{
+  EXPECT_NEAR(AmgReuse::iterations_per_decade(60, 1e-10), 6., 1e-13);
+  EXPECT_NEAR(AmgReuse::iterations_per_decade(15, 1e-2), 7.5, 1e-13);
+  EXPECT_EQ(AmgReuse::iterations_per_decade(0, 1e-10), 0.);
+  EXPECT_EQ(AmgReuse::iterations_per_decade(5, 0.), 0.);
+  EXPECT_EQ(AmgReuse::iterations_per_decade(5, 1.), 0.);
+}
+
+TEST(AmgReuse, WithoutReuseEverySolveSetsUp)
+{
+  AmgReuse rule(false, 1.5);
+  EXPECT_TRUE(rule.needs_setup());
+  rule.set_up();
+  rule.solved(60, 1e-10);
+  EXPECT_TRUE(rule.needs_setup());
+}
+
+TEST(AmgReuse, KeptUntilTheRateGrowsPastTheFactor)
+{
+  AmgReuse rule(true, 1.5);
+  EXPECT_TRUE(rule.needs_setup()); // nothing built yet
+  rule.set_up();
+  EXPECT_FALSE(rule.needs_setup());
+  rule.solved(0, 1.); // b = 0: says nothing, no reference
+  EXPECT_EQ(rule.reference_rate(), 0.);
+  rule.solved(4, 1e-2); // too short to judge: no reference
+  EXPECT_EQ(rule.reference_rate(), 0.);
+  rule.solved(60, 1e-10); // reference: 6 per decade
+  EXPECT_NEAR(rule.reference_rate(), 6., 1e-13);
+  rule.solved(17, 1e-2); // 8.5 per decade <= 1.5 * 6 = 9: kept (a looser solve compares)
+  EXPECT_FALSE(rule.needs_setup());
+  rule.solved(9, 1e-1); // 9 per decade but too short to judge: kept
+  EXPECT_FALSE(rule.needs_setup());
+  rule.solved(89, 1e-9); // 9.89 per decade > 9: rebuild
+  EXPECT_TRUE(rule.needs_setup());
+  rule.set_up(); // the new set-up takes its own reference
+  EXPECT_EQ(rule.reference_rate(), 0.);
+  rule.solved(100, 1e-10);
+  EXPECT_NEAR(rule.reference_rate(), 10., 1e-13);
+  EXPECT_FALSE(rule.needs_setup());
+  rule.invalidate(); // mesh change or failed solve
+  EXPECT_TRUE(rule.needs_setup());
+}
+
+namespace
+{
+  /**
+   * 7-point diffusion matrix of an m^3 grid with Dirichlet boundary and a coefficient that jumps
+   * over four decades between neighbouring links (so that the AMG needs tens of iterations, as
+   * for the contact tangents), plus @p shift on the diagonal.
+   */
+  void laplacian_3d(TrilinosWrappers::SparseMatrix &A, const unsigned int m, const double shift)
+  {
+    const unsigned int     N = m * m * m;
+    const auto             index = [m](int i, int j, int k) { return (k * m + j) * m + i; };
+    DynamicSparsityPattern dsp(N, N);
+    for (int k = 0; k < int(m); ++k)
+      for (int j = 0; j < int(m); ++j)
+        for (int i = 0; i < int(m); ++i)
+        {
+          dsp.add(index(i, j, k), index(i, j, k));
+          for (const auto &d : {std::array<int, 3>{{1, 0, 0}},
+                                std::array<int, 3>{{0, 1, 0}},
+                                std::array<int, 3>{{0, 0, 1}}})
+            for (const int sign : {-1, 1})
+            {
+              const int a = i + sign * d[0], b = j + sign * d[1], c = k + sign * d[2];
+              if (a >= 0 && a < int(m) && b >= 0 && b < int(m) && c >= 0 && c < int(m))
+                dsp.add(index(i, j, k), index(a, b, c));
+            }
+        }
+    if (A.m() != N)
+    {
+      const IndexSet all = complete_index_set(N);
+      A.reinit(all, all, dsp, MPI_COMM_WORLD);
+    }
+    // the link coefficient of rows p and q (symmetric)
+    const auto link = [](const unsigned int p, const unsigned int q)
+    { return std::pow(10., 2. * std::sin(0.9 * (p + q) + 0.37 * p * q)); };
+    A = 0.;
+    for (unsigned int r = 0; r < N; ++r)
+    {
+      // six links of coefficient 1 (those to the Dirichlet boundary stay so), the inner ones
+      // replaced by their coefficients below
+      double diagonal = shift + 6.;
+      for (auto it = dsp.begin(r); it != dsp.end(r); ++it)
+        if (it->column() != r)
+        {
+          A.set(r, it->column(), -link(r, it->column()));
+          diagonal += link(r, it->column()) - 1.;
+        }
+      A.set(r, r, diagonal);
+    }
+    A.compress(VectorOperation::insert);
+  }
+} // namespace
+
+// A kept AMG in LinearSolver on a sequence of matrices with one pattern (as Newton iterations
+// give): one set-up is used while it serves; a solve that needs more than `AMG rebuild factor`
+// (1.5) times the iterations per decade of the first solve with it is still converged, and the
+// next solve sets up anew; matrix_pattern_changed() forces a set-up. Every solve meets its
+// tolerance (true relative residual; bound: the tolerance with 1 % for round-off, as
+// right-preconditioned GMRES stops on the true residual). Without reuse every solve sets up.
+TEST(LinearSolver, KeptAmgServesUntilItsRateGrows)
+{
+  constexpr unsigned int         m = 16; // 4096 unknowns: ML builds levels (its coarse limit 2000)
+  TrilinosWrappers::SparseMatrix A;
+  laplacian_3d(A, m, 0.);
+  const IndexSet                all = complete_index_set(m * m * m);
+  TrilinosWrappers::MPI::Vector x(all, MPI_COMM_WORLD), b(all, MPI_COMM_WORLD);
+  for (unsigned int i = 0; i < b.size(); ++i)
+    b[i] = 1. + std::sin(0.37 * i);
+  b.compress(VectorOperation::insert);
+
+  for (const bool reuse : {true, false})
+  {
+    SCOPED_TRACE(reuse ? "AMG reuse = true" : "AMG reuse = false");
+    LinearSolverParameters parameters;
+    parameters.type = ausroll::solver::LinearSolverType::iterative;
+    parameters.amg_reuse = reuse;
+    ausroll::solver::LinearSolver<3> solver(parameters);
+    // 1. a new set-up, solved to Relative tolerance 1e-10
+    laplacian_3d(A, m, 0.);
+    const auto   first = solver.solve(A, x, b);
+    const double first_reduction = relative_residual(A, x, b);
+    EXPECT_TRUE(first.amg_setup);
+    EXPECT_LE(first_reduction, 1.01e-10);
+    // 2. the same matrix to 1e-2 (a loose forcing term): kept, fewer iterations
+    const auto loose = solver.solve(A, x, b, 1e-2);
+    EXPECT_EQ(loose.relative_tolerance, 1e-2);
+    EXPECT_EQ(loose.amg_setup, !reuse);
+    EXPECT_LE(relative_residual(A, x, b), 1.01e-2);
+    EXPECT_LT(loose.iterations, first.iterations);
+    // 3. new values: a diagonal shift that dominates where the links are weak (0.01); the kept
+    //    set-up still converges, but slower than the rebuild factor allows
+    laplacian_3d(A, m, 0.5);
+    const auto   shifted = solver.solve(A, x, b);
+    const double shifted_reduction = relative_residual(A, x, b);
+    EXPECT_EQ(shifted.amg_setup, !reuse);
+    EXPECT_LE(shifted_reduction, 1.01e-10);
+    // 4. the same matrix again: a new set-up after the slow solve (with reuse: because of it),
+    //    which needs fewer iterations than the kept one did
+    const auto again = solver.solve(A, x, b);
+    EXPECT_TRUE(again.amg_setup);
+    EXPECT_LE(relative_residual(A, x, b), 1.01e-10);
+    if (reuse)
+    {
+      EXPECT_GT(AmgReuse::iterations_per_decade(shifted.iterations, shifted_reduction),
+                1.5 * AmgReuse::iterations_per_decade(first.iterations, first_reduction));
+      EXPECT_LT(again.iterations, shifted.iterations);
+    }
+    EXPECT_EQ(solver.n_amg_setups(), reuse ? 2u : 4u);
+    // 5. a new pattern (mesh change): a new set-up
+    solver.matrix_pattern_changed();
+    const auto after_change = solver.solve(A, x, b);
+    EXPECT_TRUE(after_change.amg_setup);
+    EXPECT_EQ(solver.n_amg_setups(), reuse ? 3u : 5u);
   }
 }

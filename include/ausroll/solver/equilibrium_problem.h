@@ -52,7 +52,11 @@ namespace ausroll::solver
     {
       return std::max(last_reference_force, 1e-3 * largest_reference_force);
     }
-    double          constraint_violation() const override { return last_constraint_violation; }
+    double constraint_violation() const override { return last_constraint_violation; }
+    void   set_linear_tolerance(const double relative_tolerance) override
+    {
+      linear_tolerance = relative_tolerance;
+    }
     LinearSolveInfo solve_for_increment() override;
     void apply_increment(const double step_length) override { system.apply_increment(step_length); }
     double length_scale() const override { return system.min_cell_diameter; }
@@ -106,6 +110,9 @@ namespace ausroll::solver
     dealii::TimerOutput                      &timer;
     dealii::ConditionalOStream               &detail_log;
 
+    /** Krylov tolerance of the next solve_for_increment() (set_linear_tolerance(); initially
+        `Relative tolerance`). */
+    double linear_tolerance;
     double last_residual_norm = 0.;
     double last_reference_force = 0.;
     double last_constraint_violation = 0.;

@@ -5,10 +5,12 @@
 #pragma once
 
 #include <ausroll/core/exceptions.h>
+#include <ausroll/solver/amg_reuse.h>
 #include <ausroll/solver/solver_parameters.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -46,6 +48,8 @@ namespace ausroll::solver
     double       setup_cpu_seconds = 0.; ///< CPU time of the AMG set-up on this process
     double       seconds = 0.;           ///< wall time of set-up + solve
     double       cpu_seconds = 0.;       ///< CPU time of set-up + solve on this process
+    bool         amg_setup = false; ///< the iterative solve set up a new AMG (false: a kept one)
+    double       relative_tolerance = 0.; ///< the Krylov tolerance of the solve (iterative)
   };
 
   /**
@@ -129,6 +133,22 @@ namespace ausroll::solver
                           const dealii::TrilinosWrappers::MPI::Vector  &b) const;
 
     /**
+     * Solve A x = b; an iterative solve stops at |b - A x| <= @p relative_tolerance |b| (the
+     * forcing term of inexact Newton, ForcingTerm) instead of `Relative tolerance`. The direct
+     * solver ignores the tolerance.
+     */
+    LinearSolveInfo solve(const dealii::TrilinosWrappers::SparseMatrix &A,
+                          dealii::TrilinosWrappers::MPI::Vector        &x,
+                          const dealii::TrilinosWrappers::MPI::Vector  &b,
+                          double                                        relative_tolerance) const;
+
+    /** `Relative tolerance`: the Krylov tolerance of the overloads without one. */
+    double default_relative_tolerance() const { return parameters.relative_tolerance; }
+
+    /** AMG set-ups built so far (since construction; one per iterative solve without reuse). */
+    unsigned int n_amg_setups() const { return amg_setups; }
+
+    /**
      * Solve A x_k = b_k for several right-hand sides with one factorisation (direct) or one
      * AMG set-up (iterative; one Krylov solve each): the bordered system of generalized plane
      * strain. The iterations of the info are summed over the right-hand sides.
@@ -149,6 +169,22 @@ namespace ausroll::solver
                       const ConstVectorList                        &b,
                       const std::string                            &package) const;
 
+    /** The solve of every public overload, with the Krylov tolerance @p relative_tolerance. */
+    LinearSolveInfo solve(const dealii::TrilinosWrappers::SparseMatrix &A,
+                          const VectorList                             &x,
+                          const ConstVectorList                        &b,
+                          double                                        relative_tolerance) const;
+
+    /** Iterative solve: GMRES or CG preconditioned by the AMG (kept or new, AmgReuse). */
+    void solve_iterative(const dealii::TrilinosWrappers::SparseMatrix &A,
+                         const VectorList                             &x,
+                         const ConstVectorList                        &b,
+                         double                                        relative_tolerance,
+                         LinearSolveInfo                              &info) const;
+
+    /** Set up a new AMG for @p A with the rigid-body modes. */
+    void set_up_amg(const dealii::TrilinosWrappers::SparseMatrix &A) const;
+
     /** Let KLU refactorise with its last pivot order (Amesos "Refactorize"). */
     void set_pivot_reuse(bool reuse) const;
 
@@ -166,5 +202,12 @@ namespace ausroll::solver
     mutable std::string             factored_package;
     /** Rigid-body modes on the locally owned DoFs, mode-major. */
     std::vector<std::vector<double>> rigid_body_modes;
+    /** The AMG of the iterative path, kept between solves with `AMG reuse` (it refers to the
+        matrix: dropped by matrix_pattern_changed()), the matrix it was built for, and the rule
+        that decides when it is rebuilt. */
+    mutable std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
+    mutable const Epetra_CrsMatrix                                    *amg_matrix = nullptr;
+    mutable AmgReuse                                                   amg_reuse;
+    mutable unsigned int                                               amg_setups = 0;
   };
 } // namespace ausroll::solver

@@ -40,6 +40,13 @@ namespace ausroll::solver
      */
     virtual double constraint_violation() const = 0;
 
+    /**
+     * The relative tolerance of the iterative linear solves that follow (the forcing term of
+     * inexact Newton, `Solver/Linear solver/Krylov tolerance`; NewtonSolver sets it before every
+     * solve_for_increment()). A problem that solves directly or exactly ignores it (the default).
+     */
+    virtual void set_linear_tolerance(const double relative_tolerance) { (void)relative_tolerance; }
+
     /** Solve the linearised system for the increment (uses the last assembled matrix). */
     virtual LinearSolveInfo solve_for_increment() = 0;
 

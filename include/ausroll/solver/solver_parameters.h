@@ -27,6 +27,13 @@ namespace ausroll::solver
     cg     ///< conjugate gradients: only for symmetric positive definite tangents
   };
 
+  /** Tolerance rule of the iterative solver (`Solver/Linear solver/Krylov tolerance`). */
+  enum class KrylovTolerance
+  {
+    fixed,   ///< every solve to `Relative tolerance` of its right-hand side
+    adaptive ///< inexact Newton: the forcing term of ForcingTerm (Eisenstat-Walker, choice 2)
+  };
+
   /** Parameters of subsection `Solver/Linear solver`. */
   struct LinearSolverParameters
   {
@@ -35,8 +42,16 @@ namespace ausroll::solver
         many unknowns iteratively (measured cross-over: doc/benchmarks.md, "3D linear solver"). */
     double      automatic_iterative_threshold = 1e4;
     std::string direct_package = "automatic"; ///< `Direct solver package` (automatic | MUMPS | KLU)
-    KrylovMethod krylov_method = KrylovMethod::gmres; ///< `Iterative method` (GMRES | CG)
-    double       relative_tolerance = 1e-10;       ///< `Relative tolerance` of the iterative solver
+    KrylovMethod    krylov_method = KrylovMethod::gmres; ///< `Iterative method` (GMRES | CG)
+    double          relative_tolerance = 1e-10; ///< `Relative tolerance` of the iterative solver
+    KrylovTolerance krylov_tolerance = KrylovTolerance::adaptive; ///< `Krylov tolerance`
+    /** `Maximum forcing term`: the loosest relative tolerance of Krylov tolerance = adaptive */
+    double maximum_forcing_term = 1e-4;
+    /** `AMG reuse`: keep the AMG set-up over the solves of one matrix pattern (LinearSolver) */
+    bool amg_reuse = true;
+    /** `AMG rebuild factor`: a kept AMG is rebuilt when a solve needs more than this many
+        times the Krylov iterations per decade of its first solve */
+    double       amg_rebuild_factor = 1.5;
     unsigned int max_iterations = 2000;            ///< `Maximum iterations` of the iterative solver
     unsigned int restart = 200;                    ///< `GMRES restart`
     double       amg_aggregation_threshold = 0.02; ///< `AMG aggregation threshold` (ML)
