@@ -89,14 +89,11 @@ namespace ausroll::scene
   void Scene<dim>::thermal_step(const solver::LoadStep &step)
   {
     TimerOutput::Scope scope(*timer, "thermal");
-    // the stage's conditions when it begins (setup_thermal() has set those of stage 0)
-    const unsigned int k
-        = parameters.stages.declared() ? parameters.stages.stage_at(step.t_start) : 0;
-    if (k != thermal_stage)
+    if (parameters.stages.declared())
     {
+      const unsigned int k = parameters.stages.stage_at(step.t_start);
       thermal->set_conditions(parameters.stages.stages[k].thermal_conditions,
                               "Stages/Stage " + std::to_string(k) + "/Thermal condition values");
-      thermal_stage = k;
     }
     thermal->solve_step(step.time,
                         step.time - step.t_start,

@@ -190,8 +190,6 @@ namespace ausroll::scene
     std::unique_ptr<thermal::ThermalSystem<dim>> thermal;
     /** The last heat solve belongs to the current mechanical solution (repeated split). */
     bool thermal_current = false;
-    /** The process stage whose thermal conditions the temperature field has (setup: stage 0). */
-    unsigned int thermal_stage = 0;
     /** Warns once when a boundary that is not a contact candidate passes through a die. */
     contact::NonCandidatePenetration<dim> non_candidate_penetration;
     /** Pseudo-time at the start of the current load step. */
